@@ -1,0 +1,458 @@
+/* demdetect - find the contact pairs of a particle or box stream.
+ *
+ *   demdetect [OPTION]... [FILE]
+ *
+ * Reads disks/spheres (each object's box is its bounding box, enlarged by
+ * the buffer zone) or boxes, finds every pair of overlapping boxes with the
+ * chosen algorithm of Ch. 2, and writes the pair stream (i < j, sorted) or,
+ * with -c, only the number of pairs.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gsl/gsl_errno.h>
+
+#include "core/cli.h"
+#include "core/cost.h"
+#include "detect/detect.h"
+#include "io/scene.h"
+#include "io/stream.h"
+
+#define PROG "demdetect"
+
+enum { OPT_SHAPE = DEM_OPT_PROGRAM, OPT_CELL, OPT_CELL_SIZE, OPT_BUFFER,
+       OPT_PERIODIC };
+
+static const dem_opt_t options[] = {
+	{"algorithm", 'a', "ALGO", "dcell (default), nbs (2D), scell, adt, asdt or brute"},
+	{"count", 'c', NULL, "print only the number of pairs"},
+	{"shape", OPT_SHAPE, "[=TOL]", "keep pairs whose disks/spheres overlap by more than TOL x the smaller radius (default 0)"},
+	{"cell", OPT_CELL, "FACTOR", "cell size as a multiple of the mean object size (default 3 in 2D, 5 in 3D)"},
+	{"cell-size", OPT_CELL_SIZE, "L", "cell size as a length (overrides --cell)"},
+	{"buffer", OPT_BUFFER, "B", "enlarge every particle's box by B on each side (default 0)"},
+	{"periodic", OPT_PERIODIC, "AXES", "periodic along AXES (e.g. x, xy, xyz), period from the stream's domain"},
+	DEM_OPTS_COMMON,
+	{0}
+};
+
+static const char usage[] = "Usage: demdetect [OPTION]... [FILE]\n";
+static const char purpose[] =
+	"Find the contact pairs of a particle or box stream (FILE or standard input)\n"
+	"and write them as a pair stream, or with -c print their number.\n";
+static const char epilogue[] =
+	"Examples:\n"
+	"  dempack random -n 1000000 --seed 1 -b | demdetect -c\n"
+	"  demdetect --shape 1e-9 -c packing.txt     # count overlapping disks\n"
+	"\nSee demdetect(1), dem-scene(5) and dem-streams(5).\n";
+
+struct override {
+	const char *key, *text, *origin;
+};
+
+struct cmdline {
+	const char *input, *scene, *output;
+	int binary, gzip, dump, verbose, quiet, count;
+	struct override ov[16];
+	int nov;
+};
+
+static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
+{
+	dem_cli_t c;
+	int k, done = -1;
+	unsigned long seed;
+
+	memset(cl, 0, sizeof *cl);
+	if (dem_cli_init(&c, PROG, options) != 0)
+		return DEM_EIO;
+	while ((k = dem_cli_next(&c, argc, argv)) != -1) {
+		struct override o = {NULL, optarg, NULL};
+		switch (k) {
+		case 's': cl->scene = optarg; break;
+		case 'o': cl->output = optarg; break;
+		case 'b': cl->binary = 1; break;
+		case 'z': cl->gzip = 1; break;
+		case 'v': cl->verbose++; break;
+		case 'q': cl->quiet = 1; break;
+		case 'c': cl->count = 1; break;
+		case DEM_OPT_SEED:      /* accepted for a common interface; unused */
+			dem_cli_ulong(&c, "--seed", optarg, 0, 0xffffffffUL, &seed);
+			break;
+		case DEM_OPT_ACCURACY:  /* detection is exact: no knob */
+			if (strcmp(optarg, "coarse") && strcmp(optarg, "normal") && strcmp(optarg, "fine"))
+				dem_cli_error(&c, "--accuracy: '%s': expected coarse, normal or fine", optarg);
+			break;
+		case DEM_OPT_DUMP_SCENE: cl->dump = 1; break;
+		case 'h':
+			dem_cli_help(&c, stdout, usage, purpose, epilogue);
+			done = 0;
+			break;
+		case DEM_OPT_VERSION:
+			dem_cli_version(&c);
+			done = 0;
+			break;
+		case 'a': o.key = "detect.algorithm"; o.origin = "--algorithm"; break;
+		case OPT_SHAPE:
+			cl->ov[cl->nov++] = (struct override){"detect.shape", "true", "--shape"};
+			if (optarg) {
+				o.key = "detect.shape_tol";
+				o.origin = "--shape";
+			}
+			break;
+		case OPT_CELL: o.key = "detect.cell_factor"; o.origin = "--cell"; break;
+		case OPT_CELL_SIZE: o.key = "detect.cell"; o.origin = "--cell-size"; break;
+		case OPT_BUFFER: o.key = "detect.buffer"; o.origin = "--buffer"; break;
+		case OPT_PERIODIC: o.key = "detect.periodic"; o.origin = "--periodic"; break;
+		default: break;
+		}
+		if (o.key && cl->nov < (int)(sizeof cl->ov / sizeof cl->ov[0]) - 1)
+			cl->ov[cl->nov++] = o;
+	}
+	if (done < 0) {
+		if (optind < argc)
+			cl->input = argv[optind++];
+		if (optind < argc)
+			dem_cli_error(&c, "unexpected argument '%s' (one input at most)", argv[optind]);
+		if (cl->count && (cl->output || cl->binary || cl->gzip))
+			dem_cli_error(&c, "-c prints a number: -o, -b and -z do not apply");
+		if (dem_cli_finish(&c))
+			done = DEM_EUSAGE;
+	}
+	dem_cli_free(&c);
+	return done;
+}
+
+struct settings {
+	dem_detect_opts_t opts;
+	double buffer;
+	int shape;
+	double shape_tol;
+	unsigned periodic;
+};
+
+static int read_scene(dem_scene_t *s, struct settings *st, dem_error_t *e)
+{
+	static const char *const algos[] = {"dcell", "nbs", "scell", "adt", "asdt", "brute", NULL};
+	static const char *const sections[] = {"detect", NULL};
+	const char *per;
+	int algo;
+	double cell;
+
+	dem_detect_opts_init(&st->opts);
+	if (dem_scene_choice(s, "detect.algorithm", algos, 0, &algo, e) ||
+	    dem_scene_quantity(s, "detect.cell_factor", DEM_DIM_NONE, 0, 0, 1e6, &st->opts.cell_factor, e) ||
+	    dem_scene_quantity(s, "detect.cell", DEM_DIM_LENGTH, 0, 0, HUGE_VAL, &cell, e) ||
+	    dem_scene_quantity(s, "detect.buffer", DEM_DIM_LENGTH, 0, 0, HUGE_VAL, &st->buffer, e) ||
+	    dem_scene_string(s, "detect.periodic", "", &per, e) ||
+	    dem_scene_bool(s, "detect.shape", 0, &st->shape, e) ||
+	    dem_scene_quantity(s, "detect.shape_tol", DEM_DIM_NONE, 0, -1, 1, &st->shape_tol, e))
+		return e->code;
+	st->opts.algo = (dem_detect_algo_t)algo;
+	for (int d = 0; d < DEM_MAXDIM; d++)
+		st->opts.cell[d] = cell;
+	st->periodic = 0;
+	for (const char *p = per; *p; p++) {
+		const char *a = strchr("xyz", *p);
+		if (!a)
+			return dem_error_set(e, DEM_EINPUT,
+					     "detect.periodic: '%s': expected axes among x, y, z (e.g. xy)", per);
+		st->periodic |= 1u << (a - "xyz");
+	}
+	return dem_scene_check(s, sections, e);
+}
+
+/* The objects as read: boxes for detection, and centres and radii of
+ * particles for --shape. */
+struct objects {
+	int particles;          /* 1: disks/spheres, 0: boxes */
+	int dim;
+	size_t n, cap;
+	double *x[DEM_MAXDIM], *r;
+	dem_boxes_t b;
+};
+
+static void objects_free(struct objects *o)
+{
+	for (int d = 0; d < DEM_MAXDIM; d++) {
+		free(o->x[d]);
+		free(o->b.lo[d]);
+		free(o->b.hi[d]);
+	}
+	free(o->r);
+}
+
+static int objects_grow(struct objects *o)
+{
+	size_t cap = o->cap ? 2 * o->cap : 4096;
+	for (int d = 0; d < o->dim; d++) {
+		double **arr[3] = {&o->b.lo[d], &o->b.hi[d], &o->x[d]};
+		for (int k = 0; k < (o->particles ? 3 : 2); k++) {
+			double *p = realloc(*arr[k], cap * sizeof *p);
+			if (!p)
+				return DEM_EIO;
+			*arr[k] = p;
+		}
+	}
+	if (o->particles) {
+		double *p = realloc(o->r, cap * sizeof *p);
+		if (!p)
+			return DEM_EIO;
+		o->r = p;
+	}
+	o->cap = cap;
+	return DEM_OK;
+}
+
+static int read_objects(dem_reader_t *rd, double buffer, struct objects *o,
+			dem_error_t *e)
+{
+	const dem_header_t *h = dem_reader_header(rd);
+	static const char *const pcol[] = {"x", "y", "z"};
+	static const char *const lcol[] = {"xlo", "ylo", "zlo"};
+	static const char *const hcol[] = {"xhi", "yhi", "zhi"};
+	int ci[2 * DEM_MAXDIM + 1];
+	double v[DEM_STREAM_MAXCOL];
+
+	memset(o, 0, sizeof *o);
+	o->particles = strcmp(h->kind, "particles") == 0;
+	if (!o->particles && strcmp(h->kind, "boxes") != 0)
+		return dem_error_set(e, DEM_EINPUT, "%s: a %s stream; expected particles or boxes",
+				     dem_reader_name(rd), h->kind);
+	o->dim = o->b.dim = h->dim;
+	if (h->dim < 1)
+		return dem_error_set(e, DEM_EINPUT, "%s: the header has no '# dim' line",
+				     dem_reader_name(rd));
+	for (int d = 0; d < h->dim; d++) {
+		ci[d] = dem_header_col(h, o->particles ? pcol[d] : lcol[d]);
+		ci[DEM_MAXDIM + d] = o->particles ? 0 : dem_header_col(h, hcol[d]);
+		if (ci[d] < 0 || ci[DEM_MAXDIM + d] < 0)
+			return dem_error_set(e, DEM_EINPUT, "%s: no column '%s'", dem_reader_name(rd),
+					     ci[d] < 0 ? (o->particles ? pcol[d] : lcol[d]) : hcol[d]);
+	}
+	int cr = o->particles ? dem_header_col(h, "r") : 0;
+	if (cr < 0)
+		return dem_error_set(e, DEM_EINPUT, "%s: no column 'r'", dem_reader_name(rd));
+	int got;
+	while ((got = dem_reader_next(rd, v, e)) == 1) {
+		if (o->n == o->cap && objects_grow(o))
+			return dem_error_nomem(e, "objects");
+		size_t i = o->n++;
+		if (o->particles) {
+			double r = v[cr];
+			if (r < 0)
+				return dem_error_set(e, DEM_EINPUT, "%s: negative radius %g",
+						     dem_reader_where(rd), r);
+			o->r[i] = r;
+			for (int d = 0; d < o->dim; d++) {
+				o->x[d][i] = v[ci[d]];
+				o->b.lo[d][i] = v[ci[d]] - r - buffer;
+				o->b.hi[d][i] = v[ci[d]] + r + buffer;
+			}
+		} else {
+			for (int d = 0; d < o->dim; d++) {
+				o->b.lo[d][i] = v[ci[d]];
+				o->b.hi[d][i] = v[ci[DEM_MAXDIM + d]];
+				if (!(o->b.lo[d][i] <= o->b.hi[d][i]))
+					return dem_error_set(e, DEM_EINPUT, "%s: %s > %s",
+							     dem_reader_where(rd), lcol[d], hcol[d]);
+			}
+		}
+	}
+	o->b.n = o->n;
+	return got < 0 ? e->code : DEM_OK;
+}
+
+/* The period of each periodic axis, from the stream's "# domain LO.. HI.." */
+static int read_period(dem_reader_t *rd, unsigned periodic, int dim,
+		       dem_detect_opts_t *o, dem_error_t *e)
+{
+	const char *dom = dem_header_get(dem_reader_header(rd), "domain");
+	double v[2 * DEM_MAXDIM];
+	int n = 0, used;
+
+	if (periodic >> dim)
+		return dem_error_set(e, DEM_EINPUT, "periodic axis %c in a %dD stream",
+				     "xyz"[dim], dim);
+	if (!dom)
+		return dem_error_set(e, DEM_EINPUT,
+				     "%s: no '# domain' line in the header: periodic detection needs the period",
+				     dem_reader_name(rd));
+	while (n < 2 * dim && sscanf(dom, "%lf%n", &v[n], &used) == 1) {
+		dom += used;
+		n++;
+	}
+	if (n != 2 * dim)
+		return dem_error_set(e, DEM_EINPUT, "%s: '# domain' needs %d numbers (lower and upper corners)",
+				     dem_reader_name(rd), 2 * dim);
+	o->periodic = periodic;
+	for (int d = 0; d < dim; d++) {
+		o->period_lo[d] = v[d];
+		o->period_hi[d] = v[dim + d];
+	}
+	return DEM_OK;
+}
+
+/* --shape: keep the pairs whose disks or spheres overlap by more than tol
+ * times the smaller radius (minimum image along periodic axes). */
+static void shape_filter(const struct objects *ob, const dem_detect_opts_t *o,
+			 double tol, dem_pairs_t *p)
+{
+	size_t k = 0;
+	for (size_t q = 0; q < p->n; q++) {
+		uint32_t i = p->p[q].i, j = p->p[q].j;
+		double dd = 0;
+		for (int d = 0; d < ob->dim; d++) {
+			double dx = ob->x[d][j] - ob->x[d][i];
+			if (o->periodic >> d & 1) {
+				double L = o->period_hi[d] - o->period_lo[d];
+				dx -= L * nearbyint(dx / L);
+			}
+			dd += dx * dx;
+		}
+		double ri = ob->r[i], rj = ob->r[j];
+		double overlap = ri + rj - sqrt(dd);
+		if (overlap > tol * (ri < rj ? ri : rj))
+			p->p[k++] = p->p[q];
+	}
+	p->n = k;
+}
+
+static int write_pairs(const struct cmdline *cl, dem_reader_t *rd, int argc,
+		       char **args, size_t nobj, const dem_pairs_t *p,
+		       dem_error_t *e)
+{
+	dem_header_t h;
+	dem_writer_t *w = NULL;
+	int rc;
+
+	dem_header_init(&h, "pairs", 1, 0);
+	dem_header_add_col(&h, "i", DEM_U32, "-");
+	dem_header_add_col(&h, "j", DEM_U32, "-");
+	if ((rc = dem_header_copy_lines(&h, dem_reader_header(rd))) ||
+	    (rc = dem_header_add_provenance(&h, PROG, argc, args, 0, 0)) ||
+	    (rc = dem_header_set(&h, "objects", "%zu", nobj))) {
+		dem_header_free(&h);
+		return dem_error_nomem(e, "header");
+	}
+	int flags = (cl->binary ? DEM_STREAM_BINARY : 0) | (cl->gzip ? DEM_STREAM_GZIP : 0);
+	rc = dem_writer_open(&w, cl->output, &h, flags, e);
+	dem_header_free(&h);
+	if (rc)
+		return rc;
+	for (size_t q = 0; q < p->n; q++) {
+		double v[2] = {p->p[q].i, p->p[q].j};
+		if ((rc = dem_writer_row(w, v, e))) {
+			dem_writer_abort(w);
+			return rc;
+		}
+	}
+	return dem_writer_close(w, e);
+}
+
+int main(int argc, char **argv)
+{
+	struct cmdline cl;
+	struct settings set;
+	struct objects ob = {0};
+	dem_error_t e = {0};
+	dem_scene_t *scene = NULL;
+	dem_reader_t *rd = NULL;
+	dem_pairs_t pairs;
+	dem_detect_stats_t stats = {0};
+	dem_cost_t cost;
+	int rc;
+
+	dem_cost_start(&cost);
+	gsl_set_error_handler_off();
+	dem_pairs_init(&pairs);
+	char **args = malloc(((size_t)argc + 1) * sizeof *args);
+	if (!args)
+		return DEM_EIO;
+	memcpy(args, argv, ((size_t)argc + 1) * sizeof *args);
+	if ((rc = parse_cmdline(argc, argv, &cl)) >= 0) {
+		free(args);
+		return rc;
+	}
+	if ((rc = dem_scene_load(&scene, cl.scene, &e)))
+		goto fail;
+	for (int i = 0; i < cl.nov; i++)
+		if ((rc = dem_scene_override(scene, cl.ov[i].key, cl.ov[i].text, cl.ov[i].origin, &e)))
+			goto fail;
+	if ((rc = read_scene(scene, &set, &e)))
+		goto fail;
+	if (cl.dump) {
+		dem_scene_dump(scene, stdout);
+		goto done;
+	}
+
+	double t = dem_wall();
+	if ((rc = dem_reader_open(&rd, cl.input, &e)) ||
+	    (rc = read_objects(rd, set.buffer, &ob, &e)))
+		goto fail;
+	if (set.shape && !ob.particles) {
+		rc = dem_error_set(&e, DEM_EINPUT, "%s: --shape needs disks or spheres, not boxes",
+				   dem_reader_name(rd));
+		goto fail;
+	}
+	if (set.periodic && (rc = read_period(rd, set.periodic, ob.dim, &set.opts, &e)))
+		goto fail;
+	dem_cost_time(&cost, "read", dem_wall() - t);
+
+	t = dem_wall();
+	if ((rc = dem_detect(&ob.b, &set.opts, &pairs, &stats, &e)))
+		goto fail;
+	dem_cost_time(&cost, "detect", dem_wall() - t);
+	size_t boxpairs = pairs.n;
+	if (set.shape) {
+		t = dem_wall();
+		shape_filter(&ob, &set.opts, set.shape_tol, &pairs);
+		dem_cost_time(&cost, "shape", dem_wall() - t);
+	}
+
+	if (cl.count) {
+		printf("%zu\n", pairs.n);
+	} else {
+		t = dem_wall();
+		if (dem_pairs_sort(&pairs)) {
+			rc = dem_error_nomem(&e, "sorting pairs");
+			goto fail;
+		}
+		dem_cost_time(&cost, "sort", dem_wall() - t);
+		t = dem_wall();
+		if ((rc = write_pairs(&cl, rd, argc, args, ob.n, &pairs, &e)))
+			goto fail;
+		dem_cost_time(&cost, "write", dem_wall() - t);
+	}
+	dem_cost_count(&cost, "objects", (double)ob.n);
+	dem_cost_count(&cost, "pairs", (double)pairs.n);
+	if (set.shape)
+		dem_cost_count(&cost, "box_pairs", (double)boxpairs);
+	dem_cost_count(&cost, "checks", (double)stats.checks);
+	if (stats.ghosts)
+		dem_cost_count(&cost, "images", (double)stats.ghosts);
+	if (cl.verbose)
+		fprintf(stderr, "%s: %s, %zu objects, cell %g x %g x %g\n", PROG,
+			dem_detect_algo_name(set.opts.algo), ob.n, stats.cell[0],
+			stats.cell[1], stats.cell[2]);
+done:
+	dem_pairs_free(&pairs);
+	objects_free(&ob);
+	dem_reader_close(rd);
+	dem_scene_free(scene);
+	free(args);
+	if (!cl.output && (rc = dem_cli_close_stdout(PROG)))
+		return rc;
+	if (!cl.dump)
+		dem_cost_print(&cost, PROG, stderr);
+	return 0;
+fail:
+	fprintf(stderr, "%s: %s\n", PROG, e.msg);
+	dem_pairs_free(&pairs);
+	objects_free(&ob);
+	dem_reader_close(rd);
+	dem_scene_free(scene);
+	free(args);
+	return rc;
+}

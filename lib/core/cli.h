@@ -1,0 +1,76 @@
+/* cli.h - one option table per program drives parsing and --help.
+ *
+ * A program lists its options in a dem_opt_t table ending with
+ * DEM_OPTS_COMMON (the options every program shares, DESIGN.md) and
+ * {0}.  dem_cli_next() wraps getopt_long; errors are counted, each printed
+ * once as "prog: message", so a program can report every mistake and exit
+ * once with DEM_EUSAGE and "Try 'prog --help'".
+ */
+#ifndef DEM_CORE_CLI_H
+#define DEM_CORE_CLI_H
+
+#include <getopt.h>
+#include <stdio.h>
+
+enum {                          /* keys of long-only options */
+	DEM_OPT_SEED = 256, DEM_OPT_ACCURACY, DEM_OPT_DUMP_SCENE,
+	DEM_OPT_VERSION, DEM_OPT_PROGRAM = 300  /* programs number from here */
+};
+
+typedef struct dem_opt {
+	const char *name;       /* long name, without "--" */
+	int key;                /* short letter, or a key >= 256 */
+	const char *arg;        /* NULL: no argument; "[X]": optional; "X": required */
+	const char *help;       /* one line */
+} dem_opt_t;
+
+#define DEM_OPTS_COMMON \
+	{"scene", 's', "FILE", "read the scene (YAML) from FILE"}, \
+	{"output", 'o', "FILE", "write to FILE (atomically) instead of standard output"}, \
+	{"binary", 'b', NULL, "write binary records"}, \
+	{"gzip", 'z', NULL, "compress the output with gzip"}, \
+	{"seed", DEM_OPT_SEED, "N", "random seed (default: drawn, and written to the header)"}, \
+	{"accuracy", DEM_OPT_ACCURACY, "LEVEL", "preset of the accuracy knobs: coarse, normal or fine"}, \
+	{"dump-scene", DEM_OPT_DUMP_SCENE, NULL, "print the resolved scene with every default, then exit"}, \
+	{"verbose", 'v', NULL, "more detail on standard error"}, \
+	{"quiet", 'q', NULL, "no progress messages"}, \
+	{"help", 'h', NULL, "print this help and exit"}, \
+	{"version", DEM_OPT_VERSION, NULL, "print the version and exit"}
+
+typedef struct dem_cli {
+	const char *prog;
+	const dem_opt_t *opts;
+	struct option *lopts;
+	char *sopts;
+	int nerr;               /* usage errors so far */
+} dem_cli_t;
+
+/* Build the getopt tables; returns 0, or -1 when out of memory. */
+int dem_cli_init(dem_cli_t *c, const char *prog, const dem_opt_t *opts);
+void dem_cli_free(dem_cli_t *c);
+/* Next option key (as getopt_long), -1 at the end; an unknown option or a
+ * missing argument is counted and reported, and returns '?'. */
+int dem_cli_next(dem_cli_t *c, int argc, char **argv);
+/* Report a usage error ("prog: message") and count it. */
+void dem_cli_error(dem_cli_t *c, const char *fmt, ...)
+	__attribute__((format(printf, 2, 3)));
+/* Parse a number in [min, max]; on failure report it (naming the option)
+ * and count it.  Return 0 on success. */
+int dem_cli_double(dem_cli_t *c, const char *opt, const char *text,
+		   double min, double max, double *out);
+int dem_cli_ulong(dem_cli_t *c, const char *opt, const char *text,
+		  unsigned long min, unsigned long max, unsigned long *out);
+/* Print help: the usage lines, the one-line purpose, the option table,
+ * and the epilogue (may be NULL). */
+void dem_cli_help(const dem_cli_t *c, FILE *f, const char *usage,
+		  const char *purpose, const char *epilogue);
+/* "prog: usage error count"; prints "Try 'prog --help'" and returns
+ * DEM_EUSAGE when there were errors, 0 otherwise. */
+int dem_cli_finish(const dem_cli_t *c);
+/* Print "prog VERSION" on stdout. */
+void dem_cli_version(const dem_cli_t *c);
+/* Flush and close standard output; a write error is reported and gives
+ * DEM_EIO (coreutils' close_stdout). */
+int dem_cli_close_stdout(const char *prog);
+
+#endif

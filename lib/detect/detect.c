@@ -1,0 +1,290 @@
+/* detect.c - the detection front end: options, cell size rule, periodic
+ * images, and the pair list. */
+#include "detect/detect.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const algo_names[] = {
+	[DEM_DETECT_DCELL] = "dcell", [DEM_DETECT_NBS] = "nbs",
+	[DEM_DETECT_SCELL] = "scell", [DEM_DETECT_ADT] = "adt",
+	[DEM_DETECT_ASDT] = "asdt",   [DEM_DETECT_BRUTE] = "brute",
+};
+
+void dem_detect_opts_init(dem_detect_opts_t *o)
+{
+	memset(o, 0, sizeof *o);
+	o->algo = DEM_DETECT_DCELL;
+}
+
+const char *dem_detect_algo_name(dem_detect_algo_t a)
+{
+	return (unsigned)a < sizeof algo_names / sizeof *algo_names ?
+		algo_names[a] : "?";
+}
+
+int dem_detect_algo_parse(const char *name)
+{
+	for (size_t a = 0; a < sizeof algo_names / sizeof *algo_names; a++)
+		if (strcmp(name, algo_names[a]) == 0)
+			return (int)a;
+	return -1;
+}
+
+/* Ch. 2.5: the best cell is about 3 (2D) or 5 (3D) times the mean object
+ * size; per axis, from the mean box extent along it.  Boxes of zero size
+ * give a cell holding about factor boxes on average instead. */
+static void resolve_cell(const dem_boxes_t *b, const dem_detect_opts_t *o,
+			 double *cell)
+{
+	double f = o->cell_factor > 0 ? o->cell_factor : b->dim == 3 ? 5 : 3;
+
+	for (int d = 0; d < b->dim; d++) {
+		if (o->cell[d] > 0) {
+			cell[d] = o->cell[d];
+			continue;
+		}
+		double sum = 0, lo = HUGE_VAL, hi = -HUGE_VAL;
+		for (size_t i = 0; i < b->n; i++) {
+			sum += b->hi[d][i] - b->lo[d][i];
+			lo = fmin(lo, b->lo[d][i]);
+			hi = fmax(hi, b->hi[d][i]);
+		}
+		double mean = b->n ? sum / (double)b->n : 0;
+		if (mean > 0)
+			cell[d] = f * mean;
+		else if (hi > lo)
+			cell[d] = (hi - lo) * pow(f / (double)b->n, 1.0 / b->dim);
+		else
+			cell[d] = 1;
+	}
+}
+
+static int run(const dem_boxes_t *b, const dem_detect_opts_t *o,
+	       dem_pairs_t *out, dem_detect_stats_t *st, dem_error_t *e)
+{
+	double cell[DEM_MAXDIM] = {0};
+	int rc;
+
+	if (o->algo == DEM_DETECT_NBS && b->dim != 2)
+		return dem_error_set(e, DEM_EINPUT,
+				     "NBS is a 2D method; use dcell for %dD", b->dim);
+	resolve_cell(b, o, cell);
+	switch (o->algo) {
+	case DEM_DETECT_DCELL: rc = dem_detect_dcell(b, cell, out, st); break;
+	case DEM_DETECT_NBS:   rc = dem_detect_nbs(b, cell, out, st); break;
+	case DEM_DETECT_SCELL: rc = dem_detect_scell(b, cell, out, st); break;
+	case DEM_DETECT_ADT:   rc = dem_detect_adt(b, out, st); break;
+	case DEM_DETECT_ASDT:  rc = dem_detect_asdt(b, out, st); break;
+	case DEM_DETECT_BRUTE: rc = dem_detect_brute(b, out, st); break;
+	default:
+		return dem_error_set(e, DEM_EUSAGE, "unknown detection algorithm");
+	}
+	if (rc != DEM_OK || out->nomem)
+		return dem_error_nomem(e, "contact pairs");
+	return DEM_OK;
+}
+
+/* Periodic axes by images: every box is wrapped so its lower corner lies in
+ * the period, and a box reaching the upper face gets images shifted back by
+ * one period on every non-empty subset of the axes it crosses.  A pair of
+ * copies stands for a pair of boxes when the copies are not both shifted
+ * along any one axis; with boxes shorter than half a period the relative
+ * shift per axis is unique, so each pair is then found exactly once. */
+static int run_periodic(const dem_boxes_t *b, const dem_detect_opts_t *o,
+			dem_pairs_t *out, dem_detect_stats_t *st,
+			dem_error_t *e)
+{
+	double per[DEM_MAXDIM] = {0};
+	size_t total = 0;
+	int rc;
+
+	for (int d = 0; d < b->dim; d++) {
+		if (!(o->periodic >> d & 1))
+			continue;
+		per[d] = o->period_hi[d] - o->period_lo[d];
+		if (!(per[d] > 0) || !isfinite(per[d]))
+			return dem_error_set(e, DEM_EINPUT,
+					     "periodic axis %c: the period must be positive",
+					     "xyz"[d]);
+	}
+	for (size_t i = 0; i < b->n; i++) {
+		unsigned cross = 0;
+		for (int d = 0; d < b->dim; d++) {
+			if (!per[d])
+				continue;
+			double w = b->hi[d][i] - b->lo[d][i];
+			if (!(w < per[d] / 2))
+				return dem_error_set(e, DEM_EINPUT,
+						     "object %zu is %g long along %c, not shorter than half the period %g",
+						     i, w, "xyz"[d], per[d]);
+			double lo = b->lo[d][i] - floor((b->lo[d][i] - o->period_lo[d]) / per[d]) * per[d];
+			if (lo + w >= o->period_hi[d])
+				cross |= 1u << d;
+		}
+		total += (size_t)1 << __builtin_popcount(cross);
+	}
+	if (total > UINT32_MAX)
+		return dem_error_set(e, DEM_EINPUT, "too many objects with periodic images");
+
+	dem_boxes_t x;
+	uint32_t *owner = malloc(total * sizeof *owner);
+	unsigned char *shift = malloc(total);
+	if (!owner || !shift || dem_boxes_alloc(&x, b->dim, total) != DEM_OK) {
+		free(owner);
+		free(shift);
+		return dem_error_nomem(e, "periodic images");
+	}
+	size_t k = 0;
+	for (size_t i = 0; i < b->n; i++) {
+		double lo[DEM_MAXDIM], hi[DEM_MAXDIM];
+		unsigned cross = 0;
+		for (int d = 0; d < b->dim; d++) {
+			double w = b->hi[d][i] - b->lo[d][i];
+			lo[d] = b->lo[d][i];
+			if (per[d]) {
+				lo[d] -= floor((lo[d] - o->period_lo[d]) / per[d]) * per[d];
+				if (lo[d] + w >= o->period_hi[d])
+					cross |= 1u << d;
+			}
+			hi[d] = lo[d] + w;
+		}
+		/* every subset s of cross, the empty one (the box itself) first */
+		unsigned s = 0;
+		do {
+			for (int d = 0; d < b->dim; d++) {
+				double sh = (s >> d & 1) ? per[d] : 0;
+				x.lo[d][k] = lo[d] - sh;
+				x.hi[d][k] = hi[d] - sh;
+			}
+			owner[k] = (uint32_t)i;
+			shift[k++] = (unsigned char)s;
+			s = (s - cross) & cross;
+		} while (s);
+	}
+	if (st)
+		st->ghosts = total - b->n;
+
+	dem_pairs_t raw;
+	dem_pairs_init(&raw);
+	rc = run(&x, o, &raw, st, e);
+	if (rc == DEM_OK) {
+		for (size_t p = 0; p < raw.n; p++) {
+			uint32_t a = raw.p[p].i, c = raw.p[p].j;
+			if ((shift[a] & shift[c]) == 0 && owner[a] != owner[c])
+				dem_pairs_push(out, owner[a], owner[c]);
+		}
+		if (out->nomem)
+			rc = dem_error_nomem(e, "contact pairs");
+	}
+	dem_pairs_free(&raw);
+	dem_boxes_free(&x);
+	free(owner);
+	free(shift);
+	return rc;
+}
+
+int dem_detect(const dem_boxes_t *b, const dem_detect_opts_t *o,
+	       dem_pairs_t *out, dem_detect_stats_t *st, dem_error_t *e)
+{
+	if (b->dim < 1 || b->dim > DEM_MAXDIM)
+		return dem_error_set(e, DEM_EINPUT, "dimension %d: expected 1, 2 or 3", b->dim);
+	if (b->n > UINT32_MAX)
+		return dem_error_set(e, DEM_EINPUT, "%zu objects: at most %u", b->n, UINT32_MAX);
+	if (o->periodic & ((1u << b->dim) - 1))
+		return run_periodic(b, o, out, st, e);
+	return run(b, o, out, st, e);
+}
+
+int dem_boxes_alloc(dem_boxes_t *b, int dim, size_t n)
+{
+	memset(b, 0, sizeof *b);
+	b->dim = dim;
+	b->n = n;
+	double *block = malloc((n ? n : 1) * 2 * (size_t)dim * sizeof *block);
+	if (!block)
+		return DEM_EIO;
+	for (int d = 0; d < dim; d++) {
+		b->lo[d] = block + (2 * (size_t)d) * n;
+		b->hi[d] = block + (2 * (size_t)d + 1) * n;
+	}
+	return DEM_OK;
+}
+
+void dem_boxes_free(dem_boxes_t *b)
+{
+	free(b->lo[0]);         /* the start of the one block */
+	memset(b, 0, sizeof *b);
+}
+
+void dem_pairs_init(dem_pairs_t *p)
+{
+	memset(p, 0, sizeof *p);
+}
+
+void dem_pairs_free(dem_pairs_t *p)
+{
+	free(p->p);
+	memset(p, 0, sizeof *p);
+}
+
+int dem_pairs_grow(dem_pairs_t *p)
+{
+	size_t cap = p->cap ? p->cap * 2 : 1024;
+	dem_pair_t *q = realloc(p->p, cap * sizeof *q);
+	if (!q) {
+		p->nomem = 1;
+		return DEM_EIO;
+	}
+	p->p = q;
+	p->cap = cap;
+	return DEM_OK;
+}
+
+/* LSD radix sort by j then by i, 16 bits a pass, over the bits in use. */
+int dem_pairs_sort(dem_pairs_t *p)
+{
+	enum { R = 16, B = 1 << R };
+	uint32_t maxv = 0;
+
+	if (p->n < 2)
+		return DEM_OK;
+	for (size_t k = 0; k < p->n; k++)
+		maxv = p->p[k].j > maxv ? p->p[k].j : maxv;
+	dem_pair_t *tmp = malloc(p->n * sizeof *tmp);
+	size_t *count = malloc(B * sizeof *count);
+	if (!tmp || !count) {
+		free(tmp);
+		free(count);
+		return DEM_EIO;
+	}
+	dem_pair_t *src = p->p, *dst = tmp;
+	for (int field = 1; field >= 0; field--) {
+		for (int shift = 0; shift < 32 && (maxv >> shift); shift += R) {
+			memset(count, 0, B * sizeof *count);
+			for (size_t k = 0; k < p->n; k++) {
+				uint32_t v = field ? src[k].j : src[k].i;
+				count[(v >> shift) & (B - 1)]++;
+			}
+			size_t sum = 0;
+			for (size_t c = 0; c < B; c++) {
+				size_t t = count[c];
+				count[c] = sum;
+				sum += t;
+			}
+			for (size_t k = 0; k < p->n; k++) {
+				uint32_t v = field ? src[k].j : src[k].i;
+				dst[count[(v >> shift) & (B - 1)]++] = src[k];
+			}
+			dem_pair_t *t = src;
+			src = dst;
+			dst = t;
+		}
+	}
+	if (src != p->p)
+		memcpy(p->p, src, p->n * sizeof *src);
+	free(tmp);
+	free(count);
+	return DEM_OK;
+}

@@ -1,0 +1,23 @@
+#!/bin/sh
+# Install the Debian packages the toolkit needs, or say how.
+# Quick when everything is there: one dpkg-query call.
+pkgs="build-essential pkg-config libgsl-dev libyaml-dev zlib1g-dev libsuitesparse-dev libcmocka-dev bats gnuplot-nox valgrind"
+missing=""
+for p in $pkgs; do
+	st=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null)
+	case "$st" in
+	*" installed") ;;
+	*) missing="$missing $p" ;;
+	esac
+done
+[ -z "$missing" ] && exit 0
+if [ "$(id -u)" = 0 ]; then
+	echo "deps: installing:$missing"
+	export DEBIAN_FRONTEND=noninteractive
+	apt-get update -qq && apt-get install -y -qq --no-install-recommends $missing >/dev/null || {
+		echo "deps: apt-get install failed" >&2; exit 4; }
+else
+	echo "deps: missing packages:$missing" >&2
+	echo "deps: run as root:  apt-get update && apt-get install -y$missing" >&2
+	exit 4
+fi
