@@ -14,13 +14,14 @@
  * faces a box crosses along d, a box j overlapping box i has its lower
  * corner cell within cell(lo_i) - S and cell(hi_i) on each axis (cells
  * of lower and upper corners come from one monotone function, so this is
- * exact).  A pair is tested from the box in the later row, or in the same
- * row from the box in the later column (same cell: the larger index).  So
- * row r, once spread into X lists, serves the rows r .. r + S[1], and the
- * boxes of those rows scan the columns cell(lo) - S[0] .. cell(hi) of it.
- * When that column range is longer than row r's box list, the list itself
- * is walked instead, which bounds the work for very unequal sizes by that
- * of brute force within the reach.
+ * exact).  A pair is tested from the box in the earlier row, or in the same
+ * row from the box in the earlier column (same cell: the smaller index).
+ * So the rows are taken in order; row q is spread into X lists, and the
+ * boxes of rows q - S[1] .. q whose upper corner reaches row q scan its
+ * columns cell(lo) - S[0] .. cell(hi) (in row q itself, from their own
+ * column on).  When that column range is longer than row q's box list,
+ * the list itself is walked instead, which bounds the work for very
+ * unequal sizes by that of brute force within the reach.
  */
 #include "detect/detect.h"
 
@@ -83,6 +84,41 @@ static inline int overlap2(const ent_t *p, const ent_t *q)
 {
 	return (p->lo[0] <= q->hi[0]) & (q->lo[0] <= p->hi[0]) &
 	       (p->lo[1] <= q->hi[1]) & (q->lo[1] <= p->hi[1]);
+}
+
+/* Box i against the boxes of row q (X lists xhead, Y list from yq, count
+ * boxes) whose columns lie in lo .. hi; in i's own row (same), only those
+ * after i.  Returns the number of box tests. */
+static size_t scan(const ent_t *e, uint32_t i, uint32_t lo, uint32_t hi,
+		   int same, const uint32_t *xhead, uint32_t yq, size_t count,
+		   dem_pairs_t *out)
+{
+	const ent_t *p = &e[i];
+	const uint32_t ci = p->cx;
+	size_t checks = 0;
+
+	if ((size_t)(hi - lo) + 1 > count) {
+		/* more columns than boxes: walk the row list instead */
+		for (uint32_t j = yq; j != NONE; j = e[j].ynext) {
+			const ent_t *t = &e[j];
+			if (t->cx < lo || t->cx > hi ||
+			    (same && t->cx == ci && j <= i))
+				continue;
+			checks++;
+			if (overlap2(p, t))
+				dem_pairs_push(out, i, j);
+		}
+		return checks;
+	}
+	for (uint32_t x = lo; x <= hi; x++)
+		for (uint32_t j = xhead[x]; j != NONE; j = e[j].xnext) {
+			if (same && x == ci && j <= i)
+				continue;
+			checks++;
+			if (overlap2(p, &e[j]))
+				dem_pairs_push(out, i, j);
+		}
+	return checks;
 }
 
 int dem_detect_nbs(const dem_boxes_t *b, const double *cell,
@@ -157,33 +193,13 @@ int dem_detect_nbs(const dem_boxes_t *b, const double *cell,
 		for (size_t ri = qi + 1; ri-- > 0 && q - rows[ri] <= sy;) {
 			const int same = ri == qi;
 			for (uint32_t i = yhead[rows[ri]]; i != NONE; i = e[i].ynext) {
-				const ent_t *p = &e[i];
-				if (p->hy < q)
+				if (e[i].hy < q)
 					continue;
-				uint32_t ci = p->cx;
+				uint32_t ci = e[i].cx;
 				uint32_t lo = same ? ci : ci > sx ? ci - sx : 0;
-				uint32_t hi = cell_of(&ax, p->hi[0]);
-				if ((size_t)(hi - lo) + 1 > count) {
-					/* walk the row list instead */
-					for (uint32_t j = yhead[q]; j != NONE; j = e[j].ynext) {
-						const ent_t *t = &e[j];
-						if (t->cx < lo || t->cx > hi ||
-						    (same && t->cx == ci && j <= i))
-							continue;
-						checks++;
-						if (overlap2(p, t))
-							dem_pairs_push(out, i, j);
-					}
-					continue;
-				}
-				for (uint32_t x = lo; x <= hi; x++)
-					for (uint32_t j = xhead[x]; j != NONE; j = e[j].xnext) {
-						if (same && x == ci && j <= i)
-							continue;
-						checks++;
-						if (overlap2(p, &e[j]))
-							dem_pairs_push(out, i, j);
-					}
+				uint32_t hi = cell_of(&ax, e[i].hi[0]);
+				checks += scan(e, i, lo, hi, same, xhead, yhead[q],
+					       count, out);
 			}
 		}
 		/* clear the X lists through the row's own boxes: O(row), not

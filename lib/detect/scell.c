@@ -78,8 +78,9 @@ static void grid_setup(sgrid_t *g, const dem_boxes_t *b, const double *cell,
 		double prod = 1;
 		int split = 0;
 		for (int d = 0; d < b->dim; d++) {
-			/* 2^40 keeps the product finite for absurd cell sizes */
-			cnt[d] = span[d] > 0 ? fmin(floor(span[d] / c[d]) + 1, 0x1p40) : 1;
+			/* 2^40 keeps the product finite for absurd cells */
+			cnt[d] = span[d] > 0 ?
+				 fmin(floor(span[d] / c[d]) + 1, 0x1p40) : 1;
 			prod *= cnt[d];
 			split += cnt[d] > 1;
 		}
@@ -97,6 +98,48 @@ static void grid_setup(sgrid_t *g, const dem_boxes_t *b, const double *cell,
 		g->inv[d] = g->n[d] > 1 ? 1 / c[d] : 0;
 		used[d] = c[d];
 	}
+}
+
+/* Box p (sorted position) against the boxes of the cells in its reach
+ * that do not precede its own cell in linear order (z, then y, then x);
+ * in its own cell, the boxes after p.  co holds the sorted boxes, lo then
+ * hi, 2 dim doubles each.  Returns the number of box tests. */
+static size_t scan(const sgrid_t *g, int dim, const size_t *span,
+		   const uint32_t *start, const double *co, const uint32_t *id,
+		   size_t p, dem_pairs_t *out)
+{
+	const size_t s = 2 * (size_t)dim;
+	const double *bp = co + p * s;
+	size_t own[DEM_MAXDIM] = {0, 0, 0}, lo[DEM_MAXDIM] = {0, 0, 0},
+	       hi[DEM_MAXDIM] = {0, 0, 0}, checks = 0;
+
+	for (int d = 0; d < dim; d++) {
+		own[d] = cell_of(g, d, bp[d]);
+		lo[d] = own[d] > span[d] ? own[d] - span[d] : 0;
+		hi[d] = cell_of(g, d, bp[dim + d]);
+	}
+	for (size_t z = own[2]; z <= hi[2]; z++) {
+		int z0 = z == own[2];
+		for (size_t y = z0 ? own[1] : lo[1]; y <= hi[1]; y++) {
+			int y0 = z0 && y == own[1];
+			size_t row = (z * g->n[1] + y) * g->n[0];
+			for (size_t x = y0 ? own[0] : lo[0]; x <= hi[0]; x++) {
+				size_t c = row + x;
+				size_t k0 = y0 && x == own[0] ? p + 1 : start[c];
+				checks += start[c + 1] - k0;
+				for (size_t k = k0; k < start[c + 1]; k++) {
+					const double *bk = co + k * s;
+					int hit = 1;
+					for (int d = 0; d < dim; d++)
+						hit &= (bp[d] <= bk[dim + d]) &
+						       (bk[d] <= bp[dim + d]);
+					if (hit)
+						dem_pairs_push(out, id[p], id[k]);
+				}
+			}
+		}
+	}
+	return checks;
 }
 
 int dem_detect_scell(const dem_boxes_t *b, const double *cell,
@@ -162,38 +205,7 @@ int dem_detect_scell(const dem_boxes_t *b, const double *cell,
 
 	size_t checks = 0;
 	for (size_t p = 0; p < n; p++) {
-		const double *bp = co + p * s;
-		size_t own[DEM_MAXDIM] = {0, 0, 0}, lo[DEM_MAXDIM] = {0, 0, 0},
-		       hi[DEM_MAXDIM] = {0, 0, 0};
-		for (int d = 0; d < dim; d++) {
-			own[d] = cell_of(&g, d, bp[d]);
-			lo[d] = own[d] > span[d] ? own[d] - span[d] : 0;
-			hi[d] = cell_of(&g, d, bp[dim + d]);
-		}
-		/* the cells of the reach at or after the own cell in linear
-		 * order (z, then y, then x) */
-		for (size_t z = own[2]; z <= hi[2]; z++) {
-			int z0 = z == own[2];
-			for (size_t y = z0 ? own[1] : lo[1]; y <= hi[1]; y++) {
-				int y0 = z0 && y == own[1];
-				size_t row = (z * g.n[1] + y) * g.n[0];
-				for (size_t x = y0 ? own[0] : lo[0]; x <= hi[0]; x++) {
-					size_t c = row + x;
-					/* own cell: only the boxes after p */
-					size_t k0 = y0 && x == own[0] ? p + 1 : start[c];
-					checks += start[c + 1] - k0;
-					for (size_t k = k0; k < start[c + 1]; k++) {
-						const double *bk = co + k * s;
-						int hit = 1;
-						for (int d = 0; d < dim; d++)
-							hit &= (bp[d] <= bk[dim + d]) &
-							       (bk[d] <= bp[dim + d]);
-						if (hit)
-							dem_pairs_push(out, id[p], id[k]);
-					}
-				}
-			}
-		}
+		checks += scan(&g, dim, span, start, co, id, p, out);
 		if (out->nomem)
 			goto done;
 	}

@@ -414,6 +414,7 @@ struct dem_reader {
 	size_t nblk, iblk;
 	int ended;
 	int in_binary;          /* reading binary records: errors name the row */
+	int nl;                 /* the last line read ended with a newline */
 };
 
 /* Read one line of any length; returns its length, 0 at end of file, -1 on
@@ -448,6 +449,7 @@ static long read_line(dem_reader_t *r, dem_error_t *e)
 	if (len == 0)
 		return 0;
 	r->lineno++;
+	r->nl = r->line[len - 1] == '\n';
 	while (len && (r->line[len - 1] == '\n' || r->line[len - 1] == '\r'))
 		r->line[--len] = '\0';
 	return (long)len + 1;   /* +1 so an empty line is not end of file */
@@ -621,6 +623,8 @@ static int read_trailer(dem_reader_t *r, const char *line, dem_error_t *e)
 {
 	uint64_t n;
 	char extra;
+	if (!r->nl)     /* a cut "# end 3000" could read as "# end 30" */
+		return bad(r, e, "truncated stream: the last line is incomplete");
 	if (sscanf(line, "# end %" SCNu64 " %c", &n, &extra) != 1)
 		return bad(r, e, "expected a row or the trailer '# end N'");
 	if (n != r->rows)
