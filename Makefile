@@ -41,6 +41,7 @@ endif
 
 .PHONY: all deps build check unit cli demo clean bench
 .SUFFIXES:
+.SECONDARY:
 
 all: deps
 	@$(MAKE) --no-print-directory build

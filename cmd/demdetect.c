@@ -156,8 +156,8 @@ static int read_scene(dem_scene_t *s, struct settings *st, dem_error_t *e)
 	for (const char *p = per; *p; p++) {
 		const char *a = strchr("xyz", *p);
 		if (!a)
-			return dem_error_set(e, DEM_EINPUT,
-					     "detect.periodic: '%s': expected axes among x, y, z (e.g. xy)", per);
+			return dem_scene_error(s, "detect.periodic", e,
+					       "'%s': expected axes among x, y, z (e.g. xy)", per);
 		st->periodic |= 1u << (a - "xyz");
 	}
 	return dem_scene_check(s, sections, e);

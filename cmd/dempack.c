@@ -166,11 +166,11 @@ static int read_scene(dem_scene_t *s, dem_random_spec_t *sp, dem_error_t *e)
 	if (dem_scene_choice(s, "pack.method", methods, 0, &method, e) ||
 	    dem_scene_int(s, "pack.dim", 2, 2, 3, &dim, e) ||
 	    dem_scene_int(s, "pack.n", 1000, 0, 4294967295L, &n, e) ||
-	    dem_scene_quantity(s, "pack.density", DEM_DIM_NONE, 0.6, 1e-12, 1, &sp->density, e) ||
+	    dem_scene_quantity(s, "pack.density", DEM_DIM_NONE, 0.6, DEM_SCENE_GT0, 1, &sp->density, e) ||
 	    dem_scene_choice(s, "pack.radius.law", dem_radius_names, DEM_RADIUS_URD, &law, e) ||
-	    dem_scene_quantity(s, "pack.radius.min", DEM_DIM_LENGTH, 1, 0, HUGE_VAL, &rmin, e) ||
+	    dem_scene_quantity(s, "pack.radius.min", DEM_DIM_LENGTH, 1, DEM_SCENE_GT0, HUGE_VAL, &rmin, e) ||
 	    dem_scene_quantity(s, "pack.radius.lambda", DEM_DIM_NONE, 1, 1, 1e9, &lambda, e) ||
-	    dem_scene_vector(s, "pack.aspect", DEM_DIM_NONE, (int)dim, one, 1e-9, 1e9, sp->aspect, e))
+	    dem_scene_vector(s, "pack.aspect", DEM_DIM_NONE, (int)dim, one, DEM_SCENE_GT0, 1e9, sp->aspect, e))
 		return e->code;
 	sp->dim = (int)dim;
 	sp->n = (size_t)n;

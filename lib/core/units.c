@@ -13,14 +13,14 @@
  */
 #include "core/units.h"
 
+#include "core/consts.h"
+
 #include <ctype.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
-
-#define PI 3.14159265358979323846
 
 /* Exponents beyond these are certainly typing errors, and keep the sums
  * far from the range of signed char and long. */
@@ -67,21 +67,23 @@ struct dim_name {
 };
 
 static const struct dim_name dim_names[] = {
-	{ DEM_DIM_NONE,        "",        "number",       "numbers",       "0.5" },
-	{ DEM_DIM_LENGTH,      "m",       "length",       "lengths",       "0.7 mm" },
-	{ DEM_DIM_MASS,        "kg",      "mass",         "masses",        "2 g" },
-	{ DEM_DIM_TIME,        "s",       "time",         "times",         "1 us" },
-	{ DEM_DIM_ANGLE,       "rad",     "angle",        "angles",        "30 deg" },
-	{ DEM_DIM_VELOCITY,    "m/s",     "velocity",     "velocities",    "46.5 m/s" },
-	{ DEM_DIM_ACCEL,       "m/s^2",   "acceleration", "accelerations", "9.81 m/s^2" },
-	{ DEM_DIM_FORCE,       "N",       "force",        "forces",        "10 N" },
-	{ DEM_DIM_PRESSURE,    "Pa",      "pressure",     "pressures",     "72 GPa" },
-	{ DEM_DIM_DENSITY,     "kg/m^3",  "density",      "densities",     "7800 kg/m^3" },
-	{ DEM_DIM_RATE,        "1/s",     "rate",         "rates",         "100 1/s" },
-	{ { 2, 0, 0, 0 },      "m^2",     "area",         "areas",         "1 mm^2" },
-	{ { 3, 0, 0, 0 },      "m^3",     "volume",       "volumes",       "1 mm^3" },
-	{ { 0, 1, -2, 0 },     "N/m",     "stiffness",    "stiffnesses",   "1e6 N/m" },
-	{ { 0, 0, -1, 1 },     "rad/s",   "angular velocity", "angular velocities", "10 rad/s" },
+	{ DEM_DIM_NONE, "", "number", "numbers", "0.5" },
+	{ DEM_DIM_LENGTH, "m", "length", "lengths", "0.7 mm" },
+	{ DEM_DIM_MASS, "kg", "mass", "masses", "2 g" },
+	{ DEM_DIM_TIME, "s", "time", "times", "1 us" },
+	{ DEM_DIM_ANGLE, "rad", "angle", "angles", "30 deg" },
+	{ DEM_DIM_VELOCITY, "m/s", "velocity", "velocities", "46.5 m/s" },
+	{ DEM_DIM_ACCEL, "m/s^2", "acceleration", "accelerations",
+	  "9.81 m/s^2" },
+	{ DEM_DIM_FORCE, "N", "force", "forces", "10 N" },
+	{ DEM_DIM_PRESSURE, "Pa", "pressure", "pressures", "72 GPa" },
+	{ DEM_DIM_DENSITY, "kg/m^3", "density", "densities", "7800 kg/m^3" },
+	{ DEM_DIM_RATE, "1/s", "rate", "rates", "100 1/s" },
+	{ { 2, 0, 0, 0 }, "m^2", "area", "areas", "1 mm^2" },
+	{ { 3, 0, 0, 0 }, "m^3", "volume", "volumes", "1 mm^3" },
+	{ { 0, 1, -2, 0 }, "N/m", "stiffness", "stiffnesses", "1e6 N/m" },
+	{ { 0, 0, -1, 1 }, "rad/s", "angular velocity", "angular velocities",
+	  "10 rad/s" },
 };
 
 #define COUNT(a) (sizeof(a) / sizeof((a)[0]))
@@ -504,9 +506,9 @@ int dem_units_parse(const char *text, dem_dim_t want, double *si,
 		return -1;
 	}
 	for (i = 0; i < acc.degrees; i++)
-		v *= PI / 180;
+		v *= DEM_PI / 180;
 	for (i = 0; i > acc.degrees; i--)
-		v /= PI / 180;
+		v /= DEM_PI / 180;
 	if (!isfinite(v)) {
 		snprintf(why, whylen, "not finite");
 		return -1;

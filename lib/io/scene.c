@@ -11,6 +11,8 @@
  */
 #include "io/scene.h"
 
+#include "core/fmt.h"
+
 #include <ctype.h>
 #include <errno.h>
 #include <float.h>
@@ -70,7 +72,7 @@ struct dem_scene {
 	size_t nkeep, capkeep;
 };
 
-/* ---- small helpers ---------------------------------------------------- */
+/* ---- small helpers ------------------------------------------------------- */
 
 static int grow(void **p, size_t *cap, size_t need, size_t size)
 {
@@ -123,20 +125,7 @@ static char *xasprintf(const char *fmt, ...)
 	return buf;
 }
 
-/* The shortest of %.15g, %.16g, %.17g that reads back as the same double,
- * so 0.0007 prints as "0.0007" and still round-trips exactly. */
-static void fmt_num(double v, char buf[32])
-{
-	int prec;
-
-	for (prec = 15; prec <= 17; prec++) {
-		snprintf(buf, 32, "%.*g", prec, v);
-		if (strtod(buf, NULL) == v)
-			return;
-	}
-}
-
-/* ---- the tree ----------------------------------------------------------- */
+/* ---- the tree ------------------------------------------------------------ */
 
 static struct node *node_new(enum node_kind kind, long line, long col)
 {
@@ -285,7 +274,7 @@ static const char *describe(const struct node *n, char *buf, size_t len)
 	return buf;
 }
 
-/* ---- loading ------------------------------------------------------------ */
+/* ---- loading ------------------------------------------------------------- */
 
 static int read_all(const char *path, char **buf, size_t *len,
 		    dem_error_t *e)
@@ -355,6 +344,7 @@ static void builder_path(const struct builder *b, char *buf, size_t len)
  * mapping key or a mapping value.  Takes ownership of n. */
 static int builder_attach(struct builder *b, struct node *n, dem_error_t *e)
 {
+	const struct entry *first;
 	struct node *top;
 	struct entry *en;
 	char path[512], got[80];
@@ -374,10 +364,9 @@ static int builder_attach(struct builder *b, struct node *n, dem_error_t *e)
 		node_free(n);
 		return e->code;
 	}
-	if (top->kind == NODE_MAP && map_find(top, n->text, strlen(n->text))) {
-		const struct entry *first = map_find(top, n->text,
-						     strlen(n->text));
-
+	first = top->kind == NODE_MAP ?
+		map_find(top, n->text, strlen(n->text)) : NULL;
+	if (first) {
 		builder_path(b, path, sizeof path);
 		fail(b->s, n, e, "duplicate key '%s%s%s' (first at line %ld)",
 		     path, path[0] ? "." : "", n->text, first->line);
@@ -660,7 +649,22 @@ int dem_scene_has(const dem_scene_t *s, const char *key)
 	return lookup(s, key, &n, NULL) == 1;
 }
 
-/* ---- overrides ------------------------------------------------------------ */
+int dem_scene_error(const dem_scene_t *s, const char *key, dem_error_t *e,
+		    const char *fmt, ...)
+{
+	struct node *n;
+	char msg[768];
+	va_list ap;
+
+	va_start(ap, fmt);
+	vsnprintf(msg, sizeof msg, fmt, ap);
+	va_end(ap);
+	if (lookup(s, key, &n, NULL) == 1)
+		return fail(s, n, e, "%s: %s", key, msg);
+	return dem_error_set(e, DEM_EINPUT, "%s: %s", key, msg);
+}
+
+/* ---- overrides ----------------------------------------------------------- */
 
 static int key_valid(const char *key)
 {
@@ -758,7 +762,7 @@ int dem_scene_override(dem_scene_t *s, const char *key, const char *text,
 	}
 }
 
-/* ---- records: what the getters asked for and resolved --------------------- */
+/* ---- records: what the getters asked for and resolved -------------------- */
 
 static struct rec *rec_find(const dem_scene_t *s, const char *key)
 {
@@ -800,7 +804,7 @@ static char *quantity_text(double v, dem_dim_t dim)
 {
 	char num[32], unit[64];
 
-	fmt_num(v, num);
+	dem_fmt_double(num, v);
 	dem_dim_format(dim, unit, sizeof unit);
 	return xasprintf("%s%s%s", num, unit[0] ? " " : "", unit);
 }
@@ -845,7 +849,7 @@ static char *yaml_text(const char *s)
 	return buf;
 }
 
-/* ---- getters -------------------------------------------------------------- */
+/* ---- getters ------------------------------------------------------------- */
 
 /* Find key as a non-null scalar.  Returns 1 (found), 0 (absent) or -1 with
  * "KEY: expected WANT, got ..." for anything else. */
@@ -927,14 +931,14 @@ static int parse_quantity(const dem_scene_t *s, const struct node *n,
 		*out = v;
 		return DEM_OK;
 	}
-	fmt_num(min, lo);
-	fmt_num(max, hi);
+	dem_fmt_double(lo, min);
+	dem_fmt_double(hi, max);
 	dem_dim_format(dim, unit, sizeof unit);
 	range_text(isinf(min) ? NULL : lo, isinf(max) ? NULL : hi,
 		   min == DBL_TRUE_MIN, unit, range, sizeof range);
 	si[0] = '\0';
 	if (!is_bare_number(text)) {
-		fmt_num(v, shown);
+		dem_fmt_double(shown, v);
 		snprintf(si, sizeof si, " (= %s%s%s)", shown,
 			 unit[0] ? " " : "", unit);
 	}
@@ -1313,7 +1317,7 @@ int dem_scene_string(dem_scene_t *s, const char *key, const char *def,
 	return v ? rec_value(s, r, yaml_text(v), e) : DEM_OK;
 }
 
-/* ---- dem_scene_check ------------------------------------------------------ */
+/* ---- dem_scene_check ----------------------------------------------------- */
 
 static int asked(const dem_scene_t *s, const char *key)
 {
@@ -1466,7 +1470,7 @@ int dem_scene_check(const dem_scene_t *s, const char *const *sections,
 	return code;
 }
 
-/* ---- dem_scene_dump -------------------------------------------------------- */
+/* ---- dem_scene_dump ------------------------------------------------------ */
 
 /* Is the first dotted part of key (after plen bytes of prefix) the same as
  * that of an earlier record under the same prefix?  Then it was printed. */

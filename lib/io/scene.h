@@ -66,6 +66,14 @@ int dem_scene_vector(dem_scene_t *s, const char *key, dem_dim_t dim, int n,
 int dem_scene_string(dem_scene_t *s, const char *key, const char *def,
 		     const char **out, dem_error_t *e);
 
+/* Report a problem the program found in key's value after a getter read it
+ * (e.g. periodic axes other than x, y, z): fills e with DEM_EINPUT and
+ * "WHERE: KEY: message", WHERE being the value's file:line:col or
+ * "command line: OPTION"; without WHERE when the key is absent (the value
+ * was the program's default).  Returns DEM_EINPUT. */
+int dem_scene_error(const dem_scene_t *s, const char *key, dem_error_t *e,
+		    const char *fmt, ...) __attribute__((format(printf, 4, 5)));
+
 /* Reject keys, under the given top-level sections (NULL-terminated), that
  * no getter asked for; and reject top-level sections that are not in the
  * toolkit's list of known sections.  The first unknown key is reported with

@@ -573,7 +573,7 @@ static void test_vector(void **state)
 	dem_error_clear(&e);
 	assert_int_equal(dem_scene_vector(s, "pack.nested", DEM_DIM_NONE, 2,
 					  def, 0, HUGE_VAL, v, &e), DEM_EINPUT);
-	assert_string_equal(e.msg, "strip.yaml:10:16: pack.nested[1]: expected "
+	assert_string_equal(e.msg, "strip.yaml:10:15: pack.nested[1]: expected "
 			    "a number, got a sequence");
 	dem_error_clear(&e);
 	assert_int_equal(dem_scene_vector(s, "pack.map", DEM_DIM_NONE, 2, def,
@@ -649,6 +649,33 @@ static void test_string(void **state)
 	assert_int_equal(dem_scene_override(s, "detect.periodic", "z", "-p",
 					    &e), 0);
 	assert_string_equal(first, "xy");
+	dem_scene_free(s);
+}
+
+/* A program's own complaint about a value is placed at the value: its
+ * file:line:col, its option, or nowhere for a default. */
+static void test_scene_error(void **state)
+{
+	dem_scene_t *s = load("detect:\n  periodic: xq\n");
+	dem_error_t e = { 0, "" };
+
+	(void)state;
+	assert_int_equal(dem_scene_error(s, "detect.periodic", &e, "'%s': "
+					 "expected axes among x, y, z", "xq"),
+			 DEM_EINPUT);
+	assert_string_equal(e.msg, "strip.yaml:2:13: detect.periodic: 'xq': "
+			    "expected axes among x, y, z");
+	dem_error_clear(&e);
+	assert_int_equal(dem_scene_override(s, "detect.periodic", "w",
+					    "--periodic", &e), 0);
+	assert_int_equal(dem_scene_error(s, "detect.periodic", &e, "bad"),
+			 DEM_EINPUT);
+	assert_string_equal(e.msg, "command line: --periodic: detect.periodic: "
+			    "bad");
+	dem_error_clear(&e);
+	assert_int_equal(dem_scene_error(s, "detect.cell", &e, "too small"),
+			 DEM_EINPUT);
+	assert_string_equal(e.msg, "detect.cell: too small");
 	dem_scene_free(s);
 }
 
@@ -1132,6 +1159,7 @@ int main(void)
 		cmocka_unit_test(test_vector),
 		cmocka_unit_test(test_vector_scalar),
 		cmocka_unit_test(test_string),
+		cmocka_unit_test(test_scene_error),
 		cmocka_unit_test(test_override),
 		cmocka_unit_test(test_override_errors),
 		cmocka_unit_test(test_check_unknown_key),
