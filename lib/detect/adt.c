@@ -3,8 +3,9 @@
  *
  * A box (a, b) in E^n is the point p = (a^1..a^n, b^1..b^n) in E^2n.  The
  * points are inserted into a spatial binary tree in input order; the node of
- * box i is node i, so the tree is three arrays (children, tightened region,
- * the point) and no node is ever allocated on its own.  A node of level k
+ * box i is node i, so the tree is two arrays (per node: its tightened
+ * region and its point; its two children) and no node is allocated on its
+ * own.  A node of level k
  * bisects its region D_k across axis j = k mod 2n at its middle (Eq. 2.1,
  * 2.2); a point goes left when p^j < key.
  *

@@ -5,8 +5,9 @@
  * the upper corner b carried as augmented data.  The points go into a
  * spatial binary tree in input order, bisecting the bounding region of the
  * lower corners, D~_0, across the n axes in turn (Eq. 2.1, 2.2 with n in
- * place of 2n).  The node of box i is node i, so the tree is three arrays
- * and no node is allocated on its own.
+ * place of 2n).  The node of box i is node i, so the tree is two arrays
+ * (per node: E_k and its box; its two children) and no node is allocated
+ * on its own.
  *
  * Each node k also carries E_k, the bounding box of all the boxes stored in
  * its subtree (Eq. 2.7), and the search walks the tree in preorder, skipping
