@@ -66,7 +66,7 @@ $(BUILD)/bin/%: $(BUILD)/cmd/%.o $(LIBDEM)
 ifneq ($(SANITIZE),1)
 bin/%: $(BUILD)/bin/%
 	@mkdir -p bin
-	cp $< $@
+	cp $< $@.tmp && mv -f $@.tmp $@
 endif
 
 $(BUILD)/tests/%: $(BUILD)/tests/unit/%.o $(LIBDEM)

@@ -54,9 +54,16 @@ struct override {
 struct cmdline {
 	const char *input, *scene, *output;
 	int binary, gzip, dump, verbose, quiet, count;
-	struct override ov[16];
+	struct override *ov;    /* scene keys set by options, in order */
 	int nov;
 };
+
+static int looks_numeric(const char *s)
+{
+	char *end;
+	strtod(s, &end);
+	return end != s && *end == '\0';
+}
 
 static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 {
@@ -65,7 +72,9 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 	unsigned long seed;
 
 	memset(cl, 0, sizeof *cl);
-	if (dem_cli_init(&c, PROG, options) != 0)
+	/* each argument sets at most two keys (--shape TOL) */
+	cl->ov = malloc(2 * (size_t)argc * sizeof *cl->ov);
+	if (!cl->ov || dem_cli_init(&c, PROG, options) != 0)
 		return DEM_EIO;
 	while ((k = dem_cli_next(&c, argc, argv)) != -1) {
 		struct override o = {NULL, optarg, NULL};
@@ -96,6 +105,9 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 		case 'a': o.key = "detect.algorithm"; o.origin = "--algorithm"; break;
 		case OPT_SHAPE:
 			cl->ov[cl->nov++] = (struct override){"detect.shape", "true", "--shape"};
+			/* "--shape 1e-9" as well as "--shape=1e-9" */
+			if (!optarg && optind < argc && looks_numeric(argv[optind]))
+				o.text = optarg = argv[optind++];
 			if (optarg) {
 				o.key = "detect.shape_tol";
 				o.origin = "--shape";
@@ -107,7 +119,7 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 		case OPT_PERIODIC: o.key = "detect.periodic"; o.origin = "--periodic"; break;
 		default: break;
 		}
-		if (o.key && cl->nov < (int)(sizeof cl->ov / sizeof cl->ov[0]) - 1)
+		if (o.key)
 			cl->ov[cl->nov++] = o;
 	}
 	if (done < 0) {
@@ -234,26 +246,36 @@ static int read_objects(dem_reader_t *rd, double buffer, struct objects *o,
 	int cr = o->particles ? dem_header_col(h, "r") : 0;
 	if (cr < 0)
 		return dem_error_set(e, DEM_EINPUT, "%s: no column 'r'", dem_reader_name(rd));
+	/* every column read is a length: convert to metres */
+	double f[2 * DEM_MAXDIM + 1];
+	for (int d = 0; d < h->dim; d++) {
+		if (dem_header_col_factor(h, ci[d], DEM_DIM_LENGTH, dem_reader_name(rd), &f[d], e) ||
+		    dem_header_col_factor(h, o->particles ? cr : ci[DEM_MAXDIM + d], DEM_DIM_LENGTH,
+					  dem_reader_name(rd), &f[DEM_MAXDIM + d], e))
+			return e->code;
+	}
+	double fr = f[DEM_MAXDIM];
 	int got;
 	while ((got = dem_reader_next(rd, v, e)) == 1) {
 		if (o->n == o->cap && objects_grow(o))
 			return dem_error_nomem(e, "objects");
 		size_t i = o->n++;
 		if (o->particles) {
-			double r = v[cr];
+			double r = v[cr] * fr;
 			if (r < 0)
 				return dem_error_set(e, DEM_EINPUT, "%s: negative radius %g",
 						     dem_reader_where(rd), r);
 			o->r[i] = r;
 			for (int d = 0; d < o->dim; d++) {
-				o->x[d][i] = v[ci[d]];
-				o->b.lo[d][i] = v[ci[d]] - r - buffer;
-				o->b.hi[d][i] = v[ci[d]] + r + buffer;
+				double x = v[ci[d]] * f[d];
+				o->x[d][i] = x;
+				o->b.lo[d][i] = x - r - buffer;
+				o->b.hi[d][i] = x + r + buffer;
 			}
 		} else {
 			for (int d = 0; d < o->dim; d++) {
-				o->b.lo[d][i] = v[ci[d]];
-				o->b.hi[d][i] = v[ci[DEM_MAXDIM + d]];
+				o->b.lo[d][i] = v[ci[d]] * f[d];
+				o->b.hi[d][i] = v[ci[DEM_MAXDIM + d]] * f[DEM_MAXDIM + d];
 				if (!(o->b.lo[d][i] <= o->b.hi[d][i]))
 					return dem_error_set(e, DEM_EINPUT, "%s: %s > %s",
 							     dem_reader_where(rd), lcol[d], hcol[d]);
@@ -373,6 +395,7 @@ int main(int argc, char **argv)
 	memcpy(args, argv, ((size_t)argc + 1) * sizeof *args);
 	if ((rc = parse_cmdline(argc, argv, &cl)) >= 0) {
 		free(args);
+		free(cl.ov);
 		return rc;
 	}
 	if ((rc = dem_scene_load(&scene, cl.scene, &e)))
@@ -442,6 +465,7 @@ done:
 	dem_reader_close(rd);
 	dem_scene_free(scene);
 	free(args);
+	free(cl.ov);
 	if (!cl.output && (rc = dem_cli_close_stdout(PROG)))
 		return rc;
 	if (!cl.dump)
@@ -449,6 +473,9 @@ done:
 	return 0;
 fail:
 	fprintf(stderr, "%s: %s\n", PROG, e.msg);
+	if (rc == DEM_EUSAGE)
+		fprintf(stderr, "Try '%s --help' for more information.\n", PROG);
+	free(cl.ov);
 	dem_pairs_free(&pairs);
 	objects_free(&ob);
 	dem_reader_close(rd);

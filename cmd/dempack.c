@@ -46,7 +46,7 @@ static const char purpose[] =
 	"\n"
 	"Methods:\n"
 	"  random    N objects uniformly at random in a box sized for the target\n"
-	"            density; overlaps allowed (the detection test sets of Ch. 2.5)\n";
+	"            density; overlaps allowed (the detection test sets of Ch. 2.5)";
 static const char epilogue[] =
 	"Example:\n"
 	"  dempack random --dim 2 -n 1000000 --density 0.6 --lambda 10 --law urd --seed 1 -b\n"
@@ -61,9 +61,16 @@ struct cmdline {
 	const char *scene, *output;
 	int binary, gzip, have_seed, dump, verbose, quiet;
 	unsigned long seed;
-	struct override ov[16];
+	struct override *ov;    /* scene keys set by options, in order */
 	int nov;
+	char *aspect;           /* --aspect rewritten as a scene vector */
 };
+
+static void cmdline_free(struct cmdline *cl)
+{
+	free(cl->ov);
+	free(cl->aspect);
+}
 
 static void add_override(struct cmdline *cl, const char *key, const char *text,
 			 const char *origin)
@@ -76,11 +83,11 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 {
 	dem_cli_t c;
 	int k, done = -1;
-	static char aspect_buf[128];
 
 	memset(cl, 0, sizeof *cl);
-	if (dem_cli_init(&c, PROG, options) != 0)
-		return 4;
+	cl->ov = malloc((size_t)argc * sizeof *cl->ov);
+	if (!cl->ov || dem_cli_init(&c, PROG, options) != 0)
+		return DEM_EIO;
 	while ((k = dem_cli_next(&c, argc, argv)) != -1) {
 		switch (k) {
 		case 's': cl->scene = optarg; break;
@@ -113,27 +120,18 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 		case OPT_RMIN: add_override(cl, "pack.radius.min", optarg, "--rmin"); break;
 		case OPT_LAMBDA: add_override(cl, "pack.radius.lambda", optarg, "--lambda"); break;
 		case OPT_ASPECT: {
-			/* "2:1" -> "[2, 1]" for the scene's vector syntax */
-			size_t j = 0;
-			aspect_buf[j++] = '[';
-			for (const char *p = optarg; *p && j + 3 < sizeof aspect_buf; p++) {
-				if (*p == ':') {
-					aspect_buf[j++] = ',';
-					aspect_buf[j++] = ' ';
-				} else {
-					aspect_buf[j++] = *p;
-				}
-			}
-			aspect_buf[j++] = ']';
-			aspect_buf[j] = '\0';
-			add_override(cl, "pack.aspect", aspect_buf, "--aspect");
+			/* "2:1" -> "2, 1", which the scene reads as a vector */
+			free(cl->aspect);
+			cl->aspect = strdup(optarg);
+			if (!cl->aspect)
+				return DEM_EIO;
+			for (char *p = cl->aspect; *p; p++)
+				if (*p == ':')
+					*p = ',';
+			add_override(cl, "pack.aspect", cl->aspect, "--aspect");
 			break;
 		}
 		default:
-			break;
-		}
-		if (cl->nov == (int)(sizeof cl->ov / sizeof cl->ov[0])) {
-			dem_cli_error(&c, "too many options");
 			break;
 		}
 	}
@@ -213,6 +211,7 @@ int main(int argc, char **argv)
 	memcpy(args, argv, ((size_t)argc + 1) * sizeof *args);
 	if ((rc = parse_cmdline(argc, argv, &cl)) >= 0) {
 		free(args);
+		cmdline_free(&cl);
 		return rc;
 	}
 	if ((rc = dem_scene_load(&scene, cl.scene, &e)))
@@ -226,6 +225,7 @@ int main(int argc, char **argv)
 		dem_scene_dump(scene, stdout);
 		dem_scene_free(scene);
 		free(args);
+		cmdline_free(&cl);
 		return dem_cli_close_stdout(PROG);
 	}
 
@@ -279,6 +279,7 @@ int main(int argc, char **argv)
 	dem_header_free(&h);
 	dem_scene_free(scene);
 	free(args);
+	cmdline_free(&cl);
 	if (!cl.output && (rc = dem_cli_close_stdout(PROG)))
 		return rc;
 	dem_cost_print(&cost, PROG, stderr);
@@ -287,8 +288,11 @@ fail_h:
 	dem_header_free(&h);
 fail:
 	fprintf(stderr, "%s: %s\n", PROG, e.msg);
+	if (rc == DEM_EUSAGE)
+		fprintf(stderr, "Try '%s --help' for more information.\n", PROG);
 	dem_writer_abort(w);
 	dem_scene_free(scene);
 	free(args);
+	cmdline_free(&cl);
 	return rc;
 }

@@ -31,7 +31,7 @@ BEGIN {
 
 /^#/ || NF < 9 { next }
 
-(tables == "all" || $1 in want) && N[$2] != "" {
+(tables == "all" || ($1 in want)) && N[$2] != "" {
 	print cost($8, key($3, N[$2], $4, $5, $6, $7), "bin")
 }
 

@@ -62,11 +62,12 @@ void dem_cli_error(dem_cli_t *c, const char *fmt, ...)
 
 int dem_cli_next(dem_cli_t *c, int argc, char **argv)
 {
-	int prev = optind;
 	opterr = 0;
 	int k = getopt_long(argc, argv, c->sopts, c->lopts, NULL);
 	if (k == '?' || k == ':') {
-		const char *arg = prev < argc ? argv[prev] : "?";
+		/* the offending word is the last one getopt consumed (it may have
+		 * moved the operands behind it) */
+		const char *arg = optind > 0 && optind <= argc ? argv[optind - 1] : "?";
 		if (k == ':')
 			dem_cli_error(c, "option '%s' needs an argument", arg);
 		else if (optopt && optopt < 256)

@@ -18,6 +18,38 @@ void dem_detect_opts_init(dem_detect_opts_t *o)
 	o->algo = DEM_DETECT_DCELL;
 }
 
+struct dem_detect_ws {
+	void *buf[DEM_DETECT_WS_SLOTS];
+	size_t cap[DEM_DETECT_WS_SLOTS];
+};
+
+dem_detect_ws_t *dem_detect_ws_new(void)
+{
+	return calloc(1, sizeof(dem_detect_ws_t));
+}
+
+void dem_detect_ws_free(dem_detect_ws_t *ws)
+{
+	if (!ws)
+		return;
+	for (int k = 0; k < DEM_DETECT_WS_SLOTS; k++)
+		free(ws->buf[k]);
+	free(ws);
+}
+
+/* A buffer that must grow gets 1/8 more than asked, so a set that grows a
+ * little from step to step does not reallocate every step. */
+void *dem_detect_ws_get(dem_detect_ws_t *ws, int slot, size_t bytes)
+{
+	if (bytes <= ws->cap[slot])
+		return ws->buf[slot];
+	free(ws->buf[slot]);
+	size_t cap = bytes + bytes / 8;
+	ws->buf[slot] = malloc(cap);
+	ws->cap[slot] = ws->buf[slot] ? cap : 0;
+	return ws->buf[slot];
+}
+
 const char *dem_detect_algo_name(dem_detect_algo_t a)
 {
 	return (unsigned)a < sizeof algo_names / sizeof *algo_names ?
@@ -34,28 +66,43 @@ int dem_detect_algo_parse(const char *name)
 
 /* Ch. 2.5: the best cell is about 3 (2D) or 5 (3D) times the mean object
  * size; per axis, from the mean box extent along it.  Boxes of zero size
- * give a cell holding about factor boxes on average instead. */
+ * give a cell holding about factor boxes on average instead.  One pass per
+ * axis with four partial sums, so the additions do not wait on each other;
+ * the span of the set is needed (and scanned) only when every box is flat. */
 static void resolve_cell(const dem_boxes_t *b, const dem_detect_opts_t *o,
 			 double *cell)
 {
 	double f = o->cell_factor > 0 ? o->cell_factor : b->dim == 3 ? 5 : 3;
+	size_t n = b->n;
 
 	for (int d = 0; d < b->dim; d++) {
 		if (o->cell[d] > 0) {
 			cell[d] = o->cell[d];
 			continue;
 		}
-		double sum = 0, lo = HUGE_VAL, hi = -HUGE_VAL;
-		for (size_t i = 0; i < b->n; i++) {
-			sum += b->hi[d][i] - b->lo[d][i];
-			lo = fmin(lo, b->lo[d][i]);
-			hi = fmax(hi, b->hi[d][i]);
+		const double *lo = b->lo[d], *hi = b->hi[d];
+		double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+		size_t i = 0;
+		for (; i + 4 <= n; i += 4) {
+			s0 += hi[i] - lo[i];
+			s1 += hi[i + 1] - lo[i + 1];
+			s2 += hi[i + 2] - lo[i + 2];
+			s3 += hi[i + 3] - lo[i + 3];
 		}
-		double mean = b->n ? sum / (double)b->n : 0;
-		if (mean > 0)
+		for (; i < n; i++)
+			s0 += hi[i] - lo[i];
+		double mean = n ? ((s0 + s1) + (s2 + s3)) / (double)n : 0;
+		if (mean > 0) {
 			cell[d] = f * mean;
-		else if (hi > lo)
-			cell[d] = (hi - lo) * pow(f / (double)b->n, 1.0 / b->dim);
+			continue;
+		}
+		double min = HUGE_VAL, max = -HUGE_VAL;
+		for (i = 0; i < n; i++) {
+			min = lo[i] < min ? lo[i] : min;
+			max = hi[i] > max ? hi[i] : max;
+		}
+		if (max > min)
+			cell[d] = (max - min) * pow(f / (double)n, 1.0 / b->dim);
 		else
 			cell[d] = 1;
 	}
@@ -72,7 +119,7 @@ static int run(const dem_boxes_t *b, const dem_detect_opts_t *o,
 				     "NBS is a 2D method; use dcell for %dD", b->dim);
 	resolve_cell(b, o, cell);
 	switch (o->algo) {
-	case DEM_DETECT_DCELL: rc = dem_detect_dcell(b, cell, out, st); break;
+	case DEM_DETECT_DCELL: rc = dem_detect_dcell_ws(b, cell, o->ws, out, st); break;
 	case DEM_DETECT_NBS:   rc = dem_detect_nbs(b, cell, out, st); break;
 	case DEM_DETECT_SCELL: rc = dem_detect_scell(b, cell, out, st); break;
 	case DEM_DETECT_ADT:   rc = dem_detect_adt(b, out, st); break;

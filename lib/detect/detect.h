@@ -46,6 +46,12 @@ typedef enum dem_detect_algo {
 	DEM_DETECT_BRUTE          /* all N(N-1)/2 pairs */
 } dem_detect_algo_t;
 
+/* A workspace: the buffers of a detection kept from one call to the next,
+ * so a time loop that detects every step neither allocates nor touches
+ * fresh pages after the first step (STYLE.md 10).  Opaque; one workspace
+ * serves one detection at a time. */
+typedef struct dem_detect_ws dem_detect_ws_t;
+
 typedef struct dem_detect_opts {
 	dem_detect_algo_t algo;
 	/* Cell size of the cell methods, per axis.  0 means: cell_factor times
@@ -59,6 +65,9 @@ typedef struct dem_detect_opts {
 	 * than half the period along that axis). */
 	unsigned periodic;
 	double period_lo[DEM_MAXDIM], period_hi[DEM_MAXDIM];
+	/* Buffers to reuse (see dem_detect_ws_new); NULL: allocate and free
+	 * them within each call. */
+	struct dem_detect_ws *ws;
 } dem_detect_opts_t;
 
 /* Counters of one detection run, for the cost line. */
@@ -69,8 +78,20 @@ typedef struct dem_detect_stats {
 	size_t ghosts;            /* periodic images added */
 } dem_detect_stats_t;
 
-/* Defaults: D-cell, Ch. 2.5 cell rule, no periodic axes. */
+/* Defaults: D-cell, Ch. 2.5 cell rule, no periodic axes, no workspace. */
 void dem_detect_opts_init(dem_detect_opts_t *o);
+
+/* A new, empty workspace (NULL without memory); it grows to what the
+ * largest detection run with it needed and keeps that until freed.
+ * dem_detect_ws_free(NULL) does nothing. */
+dem_detect_ws_t *dem_detect_ws_new(void);
+void dem_detect_ws_free(dem_detect_ws_t *ws);
+
+/* For the algorithms: buffer number slot (< DEM_DETECT_WS_SLOTS) of the
+ * workspace, at least bytes long; its contents are undefined (a buffer
+ * that has to grow is replaced, not copied).  NULL without memory. */
+#define DEM_DETECT_WS_SLOTS 8
+void *dem_detect_ws_get(dem_detect_ws_t *ws, int slot, size_t bytes);
 
 /* Name <-> algorithm ("dcell", "nbs", "scell", "adt", "asdt", "brute").
  * dem_detect_algo_parse returns -1 for an unknown name. */
@@ -91,6 +112,10 @@ int dem_detect(const dem_boxes_t *b, const dem_detect_opts_t *o,
  * memory runs out (out->nomem may also be set). */
 int dem_detect_dcell(const dem_boxes_t *b, const double *cell,
 		     dem_pairs_t *out, dem_detect_stats_t *st);
+/* The same with a workspace (NULL: a temporary one). */
+int dem_detect_dcell_ws(const dem_boxes_t *b, const double *cell,
+			dem_detect_ws_t *ws, dem_pairs_t *out,
+			dem_detect_stats_t *st);
 int dem_detect_nbs(const dem_boxes_t *b, const double *cell,
 		   dem_pairs_t *out, dem_detect_stats_t *st);
 int dem_detect_scell(const dem_boxes_t *b, const double *cell,

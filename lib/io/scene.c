@@ -209,6 +209,9 @@ static int vfail_at(const dem_scene_t *s, const char *origin, long line,
 
 	where(s, origin, line, col, w, sizeof w);
 	vsnprintf(msg, sizeof msg, fmt, ap);
+	/* a bad value typed on the command line is a usage error (exit 2) */
+	if (origin && code == DEM_EINPUT)
+		code = DEM_EUSAGE;
 	return dem_error_set(e, code, "%s: %s", w, msg);
 }
 

@@ -80,6 +80,27 @@ int dem_header_col(const dem_header_t *h, const char *name)
 	return -1;
 }
 
+int dem_header_col_factor(const dem_header_t *h, int col, dem_dim_t want,
+			  const char *name, double *factor, dem_error_t *e)
+{
+	const char *u = h->col[col].unit;
+	char text[40], why[160];
+
+	if (strcmp(u, "-") == 0) {
+		if (dem_dim_equal(want, DEM_DIM_NONE)) {
+			*factor = 1;
+			return DEM_OK;
+		}
+		return dem_error_set(e, DEM_EINPUT, "%s: column %s has no unit, expected %s",
+				     name, h->col[col].name, dem_dim_si_name(want));
+	}
+	snprintf(text, sizeof text, "1 %s", u);
+	if (dem_units_parse(text, want, factor, why, sizeof why) != 0)
+		return dem_error_set(e, DEM_EINPUT, "%s: column %s: %s", name,
+				     h->col[col].name, why);
+	return DEM_OK;
+}
+
 static int header_vput(dem_header_t *h, int replace, const char *key,
 		       const char *fmt, va_list ap)
 {
@@ -151,7 +172,7 @@ int dem_header_add_provenance(dem_header_t *h, const char *prog, int argc,
 {
 	size_t len = 64 + strlen(prog);
 	for (int i = 1; i < argc; i++)
-		len += strlen(argv[i]) + 1;
+		len += 4 * strlen(argv[i]) + 3;
 	char *s = malloc(len), *p = s;
 	if (!s)
 		return DEM_EIO;
@@ -160,10 +181,24 @@ int dem_header_add_provenance(dem_header_t *h, const char *prog, int argc,
 		p += sprintf(p, " seed=%lu", seed);
 	p += sprintf(p, " args:");
 	for (int i = 1; i < argc; i++) {
-		/* a header line must stay one line */
+		/* quoted for the shell where needed, so the line can be rerun;
+		 * and kept on one line */
+		const char *a = argv[i];
+		int quote = !*a || a[strspn(a, "abcdefghijklmnopqrstuvwxyz"
+					    "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_.,:/=+@%^")];
 		*p++ = ' ';
-		for (const char *a = argv[i]; *a; a++)
-			*p++ = (*a == '\n' || *a == '\r') ? ' ' : *a;
+		if (quote)
+			*p++ = '\'';
+		for (; *a; a++) {
+			if (*a == '\'') {
+				memcpy(p, "'\\''", 4);
+				p += 4;
+			} else {
+				*p++ = (*a == '\n' || *a == '\r') ? ' ' : *a;
+			}
+		}
+		if (quote)
+			*p++ = '\'';
 	}
 	*p = '\0';
 	int rc = dem_header_add(h, "prog", "%s", s);
@@ -188,13 +223,20 @@ struct dem_writer {
 	uint64_t rows;
 };
 
+/* zlib prefixes its messages with the file name it was given, "<fd:3>: " */
+static const char *zmsg(const char *msg)
+{
+	const char *p = msg && msg[0] == '<' ? strstr(msg, ">: ") : NULL;
+	return p ? p + 3 : msg;
+}
+
 static int werr(dem_writer_t *w, dem_error_t *e)
 {
 	int zerr = 0;
 	const char *msg = gzerror(w->gz, &zerr);
 	if (zerr == Z_ERRNO || !msg || !*msg)
 		return dem_error_set(e, DEM_EIO, "%s: %s", w->name, strerror(errno ? errno : EIO));
-	return dem_error_set(e, DEM_EIO, "%s: %s", w->name, msg);
+	return dem_error_set(e, DEM_EIO, "%s: %s", w->name, zmsg(msg));
 }
 
 static int wputs(dem_writer_t *w, const char *s, size_t n, dem_error_t *e)
@@ -437,7 +479,7 @@ static long read_line(dem_reader_t *r, dem_error_t *e)
 			if (zerr != Z_OK && zerr != Z_BUF_ERROR) {
 				dem_error_set(e, zerr == Z_ERRNO ? DEM_EIO : DEM_EINPUT,
 					      "%s: %s", r->name,
-					      zerr == Z_ERRNO ? strerror(errno) : msg);
+					      zerr == Z_ERRNO ? strerror(errno) : zmsg(msg));
 				return -1;
 			}
 			break;
@@ -513,6 +555,9 @@ static int read_header(dem_reader_t *r, dem_error_t *e)
 		return bad(r, e, "not a dem stream: the first line should be '# dem KIND VERSION'");
 	if (!dem_stream_kind_known(kind))
 		return bad(r, e, "unknown stream kind '%s'", kind);
+	if (version != 1)
+		return bad(r, e, "%s stream version %d: this reader knows version 1",
+			   kind, version);
 	dem_header_init(&r->h, kind, version, 0);
 	for (;;) {
 		n = read_line(r, e);
@@ -569,6 +614,12 @@ int dem_reader_open(dem_reader_t **rp, const char *path, dem_error_t *e)
 	if (path && strcmp(path, "-") != 0) {
 		snprintf(r->name, sizeof r->name, "%s", path);
 		fd = open(path, O_RDONLY);
+		struct stat sb;
+		if (fd >= 0 && fstat(fd, &sb) == 0 && S_ISDIR(sb.st_mode)) {
+			close(fd);
+			fd = -1;
+			errno = EISDIR;
+		}
 		if (fd < 0) {
 			int err = errno;
 			free(r);
@@ -652,6 +703,10 @@ static int next_text(dem_reader_t *r, double *v, dem_error_t *e)
 		char *p = r->line + strspn(r->line, " \t");
 		if (*p == '\0')
 			continue;
+		if (!r->nl) {
+			bad(r, e, "truncated stream: the last line is incomplete");
+			return -1;
+		}
 		if (*p == '#')
 			return read_trailer(r, p, e) ? -1 : 0;
 		for (int i = 0; i < r->h.ncol; i++) {
@@ -697,6 +752,8 @@ static int next_text(dem_reader_t *r, double *v, dem_error_t *e)
 	}
 }
 
+/* Read exactly n bytes; a short read is a truncated stream, reported at the
+ * first record it cut. */
 static int gzread_all(dem_reader_t *r, void *buf, size_t n, dem_error_t *e)
 {
 	int got = n ? gzread(r->gz, buf, (unsigned)n) : 0;
@@ -704,10 +761,12 @@ static int gzread_all(dem_reader_t *r, void *buf, size_t n, dem_error_t *e)
 		int zerr;
 		const char *msg = gzerror(r->gz, &zerr);
 		dem_error_set(e, zerr == Z_ERRNO ? DEM_EIO : DEM_EINPUT, "%s: %s", r->name,
-			      zerr == Z_ERRNO ? strerror(errno) : msg);
+			      zerr == Z_ERRNO ? strerror(errno) : zmsg(msg));
 		return -1;
 	}
 	if ((size_t)got != n) {
+		if (buf == r->blk)
+			r->rows += (size_t)got / r->recsize;
 		bad(r, e, "truncated stream: it ends inside the binary rows");
 		return -1;
 	}

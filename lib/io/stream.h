@@ -26,6 +26,7 @@
 #include <stdint.h>
 
 #include "core/error.h"
+#include "core/units.h"
 
 #define DEM_STREAM_MAXCOL 64
 
@@ -62,6 +63,11 @@ int dem_header_add_col(dem_header_t *h, const char *name, dem_coltype_t type,
 		       const char *unit);
 /* Index of the column named name, or -1. */
 int dem_header_col(const dem_header_t *h, const char *name);
+/* The factor converting column col to SI, after checking that its unit is
+ * one of dimension want (a column in "mm" read as a length gives 0.001;
+ * "-" is dimensionless).  name is the stream's name for the message. */
+int dem_header_col_factor(const dem_header_t *h, int col, dem_dim_t want,
+			  const char *name, double *factor, dem_error_t *e);
 /* Append a "# key value" line (keys may repeat, e.g. prog). */
 int dem_header_add(dem_header_t *h, const char *key, const char *fmt, ...)
 	__attribute__((format(printf, 3, 4)));

@@ -668,8 +668,9 @@ static void test_scene_error(void **state)
 	dem_error_clear(&e);
 	assert_int_equal(dem_scene_override(s, "detect.periodic", "w",
 					    "--periodic", &e), 0);
+	/* a bad value typed on the command line is a usage error */
 	assert_int_equal(dem_scene_error(s, "detect.periodic", &e, "bad"),
-			 DEM_EINPUT);
+			 DEM_EUSAGE);
 	assert_string_equal(e.msg, "command line: --periodic: detect.periodic: "
 			    "bad");
 	dem_error_clear(&e);
@@ -711,7 +712,7 @@ static void test_override(void **state)
 	assert_int_equal(dem_scene_override(s, "pack.density", "1.5",
 					    "--density", &e), 0);
 	assert_int_equal(dem_scene_quantity(s, "pack.density", DEM_DIM_NONE, 1,
-					    0, 1, &v, &e), DEM_EINPUT);
+					    0, 1, &v, &e), DEM_EUSAGE);
 	assert_string_equal(e.msg, "command line: --density: pack.density: 1.5 "
 			    "is out of range, expected a number in [0, 1]");
 	dem_error_clear(&e);
@@ -719,7 +720,7 @@ static void test_override(void **state)
 					    "--rmin", &e), 0);
 	assert_int_equal(dem_scene_quantity(s, "pack.radius.min",
 					    DEM_DIM_LENGTH, 1, 0, HUGE_VAL,
-					    &v, &e), DEM_EINPUT);
+					    &v, &e), DEM_EUSAGE);
 	assert_string_equal(e.msg, "command line: --rmin: pack.radius.min: "
 			    "unit 's' is a time, expected a length (e.g. "
 			    "'0.7 mm')");
@@ -860,7 +861,7 @@ static void test_check_override(void **state)
 	(void)state;
 	assert_int_equal(dem_scene_override(s, "pack.foo", "1", "--foo", &e), 0);
 	read_pack(s, &e);
-	assert_int_equal(dem_scene_check(s, pack_only, &e), DEM_EINPUT);
+	assert_int_equal(dem_scene_check(s, pack_only, &e), DEM_EUSAGE);
 	assert_string_equal(e.msg, "command line: --foo: unknown key "
 			    "'pack.foo'; known keys here: aspect, density, dim, "
 			    "n, radius");
@@ -869,7 +870,7 @@ static void test_check_override(void **state)
 
 	s = load("pack:\n  n: 5\n");
 	assert_int_equal(dem_scene_override(s, "blob.x", "1", "--blob", &e), 0);
-	assert_int_equal(dem_scene_check(s, NULL, &e), DEM_EINPUT);
+	assert_int_equal(dem_scene_check(s, NULL, &e), DEM_EUSAGE);
 	assert_string_equal(e.msg, "command line: --blob: unknown section "
 			    "'blob'; known sections: pack, detect, shot, block, "
 			    "material, contact, run, profile, form, plate, "

@@ -1,0 +1,394 @@
+#!/usr/bin/env bats
+# Command-line tests of dempack (random method).  The programs come from
+# PATH (tests/run.sh puts bin/, or the sanitizer build, first).  References:
+# the common interface and exit codes of DESIGN.md, the stream format of
+# dem-streams(5), the radius laws of lib/core/radius.h (Han 2004, Ch. 2.5).
+
+bats_require_minimum_version 1.5.0
+
+setup() {
+	T=$BATS_TEST_TMPDIR
+}
+
+# Rows of a text stream (lines that are not header or trailer).
+rows() {
+	grep -vc '^#' "$1"
+}
+
+# A usage error: exit 2, nothing on stdout, one message line naming the
+# program, then "Try 'prog --help' ..." (coreutils).  Returns 1 (with the
+# details on stdout, which bats shows) when it is not one.
+# usage_error PROG ARGS...
+usage_error() {
+	local prog=$1
+	run --separate-stderr "$@"
+	echo "\$ $*  -> status $status, stdout '$output', stderr:"
+	printf '  %s\n' "${stderr_lines[@]}"
+	[ "$status" -eq 2 ] || return 1
+	[ -z "$output" ] || return 1
+	[ "${#stderr_lines[@]}" -eq 2 ] || return 1
+	[[ ${stderr_lines[0]} == "$prog: "* ]] || return 1
+	[ "${stderr_lines[1]}" = "Try '$prog --help' for more information." ]
+}
+
+# The packing density of a text particle stream of dimension $2: the sum
+# of the areas (volumes) over the domain of its '# domain' line.
+density() {
+	awk -v dim="$2" '
+		/^# domain / { V = 1; for (d = 0; d < dim; d++) V *= $(3 + dim + d) - $(3 + d) }
+		/^#/ { next }
+		{ r = $(dim + 1); s += dim == 2 ? 3.141592653589793 * r * r : 4 / 3 * 3.141592653589793 * r * r * r }
+		END { printf "%.17g\n", s / V }' "$1"
+}
+
+# Is |a - b| <= tol |b| ?
+close_to() {
+	awk -v a="$1" -v b="$2" -v tol="$3" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= tol * (b < 0 ? -b : b)) }'
+}
+
+@test "dempack --help: usage and every option on stdout, nothing on stderr, exit 0" {
+	run --separate-stderr dempack --help
+	[ "$status" -eq 0 ]
+	[ -z "$stderr" ]
+	[[ ${lines[0]} == "Usage: dempack random "* ]]
+	for o in dim number density law rmin lambda aspect scene output binary gzip seed accuracy dump-scene verbose quiet help version; do
+		echo "$output" | grep -q -- "--$o" || { echo "--$o missing"; false; }
+	done
+}
+
+@test "dempack --version: 'dempack (dem toolkit) X.Y.Z' on stdout, exit 0" {
+	run --separate-stderr dempack --version
+	[ "$status" -eq 0 ]
+	[ -z "$stderr" ]
+	[[ $output =~ ^dempack\ \(dem\ toolkit\)\ [0-9]+\.[0-9]+\.[0-9]+$ ]]
+}
+
+@test "dempack: an unknown option is a usage error (exit 2, one line + Try, no stdout)" {
+	usage_error dempack --bogus random
+	[[ ${stderr_lines[0]} == *"'--bogus'"* ]]
+	usage_error dempack -Y random
+	[[ ${stderr_lines[0]} == *"-Y"* ]]
+}
+
+@test "dempack: a missing option argument is a usage error" {
+	usage_error dempack --dump-scene --seed
+	[[ ${stderr_lines[0]} == *"--seed"* ]]
+}
+
+@test "dempack: a missing or unknown method is a usage error" {
+	usage_error dempack -n 10
+	usage_error dempack front -n 10
+	[[ ${stderr_lines[0]} == *front* ]]
+	usage_error dempack random extra
+}
+
+@test "dempack: a usage message names the bad option even when it follows the method" {
+	# getopt moves the method word; the message must still name the option
+	usage_error dempack random --bogus
+	[[ ${stderr_lines[0]} == *"'--bogus'"* ]]
+	usage_error dempack random -n
+	[[ ${stderr_lines[0]} == *"'-n'"* ]]
+}
+
+@test "dempack: bad --seed and --accuracy values are usage errors naming the option" {
+	for args in "--seed x" "--seed -1" "--seed 4294967296" "--accuracy best"; do
+		# shellcheck disable=SC2086
+		usage_error dempack random -n 5 $args
+		[[ ${stderr_lines[0]} == *"${args%% *}"* ]]
+	done
+}
+
+@test "dempack: bad method option values are usage errors naming the option" {
+	# exit 2 and "Try" (DESIGN.md: 2 = usage), like --seed; nothing on stdout
+	fails=0
+	while IFS='|' read -r opt val; do
+		if ! usage_error dempack random -n 5 "$opt" "$val" ||
+		   [[ ${stderr_lines[0]} != *"$opt"* ]]; then
+			echo "  ^ not a usage error naming $opt"
+			fails=$((fails + 1))
+		fi
+	done <<-'EOF'
+	--dim|4
+	--dim|two
+	--number|abc
+	--number|-1
+	--density|0
+	--density|1.5
+	--law|gauss
+	--rmin|0
+	--rmin|-1 mm
+	--rmin|1 kg
+	--lambda|0.5
+	--aspect|1:0
+	--aspect|1:2:3
+	EOF
+	[ "$fails" -eq 0 ]
+}
+
+@test "dempack: an option given many times: the last value wins" {
+	# shellcheck disable=SC2046
+	run --separate-stderr dempack random $(printf -- '-n 1 %.0s' $(seq 20)) -n 5 --seed 1
+	echo "$status: $stderr"
+	[ "$status" -eq 0 ]
+	[ "$(echo "$output" | grep -vc '^#')" -eq 5 ]
+}
+
+@test "dempack random: N rows of x y r in 2D and x y z r in 3D, header as in dem-streams(5)" {
+	dempack random -n 137 --seed 1 > "$T/p2" 2>/dev/null
+	dempack random --dim 3 -n 59 --seed 1 > "$T/p3" 2>/dev/null
+	[ "$(head -n 1 "$T/p2")" = "# dem particles 1" ]
+	grep -qx '# dim 2' "$T/p2"
+	grep -qx '# columns x:f64:m y:f64:m r:f64:m' "$T/p2"
+	grep -qx '# format text' "$T/p2"
+	grep -qx '# data' "$T/p2"
+	grep -qx '# dim 3' "$T/p3"
+	grep -qx '# columns x:f64:m y:f64:m z:f64:m r:f64:m' "$T/p3"
+	[ "$(rows "$T/p2")" -eq 137 ]
+	[ "$(rows "$T/p3")" -eq 59 ]
+	[ "$(tail -n 1 "$T/p2")" = "# end 137" ]
+	[ "$(tail -n 1 "$T/p3")" = "# end 59" ]
+	awk '!/^#/ && NF != 3 { exit 1 }' "$T/p2"
+	awk '!/^#/ && NF != 4 { exit 1 }' "$T/p3"
+}
+
+@test "dempack random: header records provenance, seed, method and domain" {
+	dempack random -n 20 --seed 42 --law nrd --lambda 3 --density 0.4 > "$T/p" 2>/dev/null
+	grep -qx '# prog dempack [0-9.]* seed=42 args: random -n 20 --seed 42 --law nrd --lambda 3 --density 0.4' "$T/p"
+	grep -qx '# seed 42' "$T/p"
+	grep -qx '# method random law=nrd rmin=1 lambda=3 density=0.4' "$T/p"
+	grep -qE '^# domain 0 0 [0-9.e+-]+ [0-9.e+-]+$' "$T/p"
+}
+
+@test "dempack random: every centre lies in the domain of the '# domain' line (2D and 3D)" {
+	dempack random -n 500 --seed 3 --aspect 3:1 > "$T/p2" 2>/dev/null
+	dempack random --dim 3 -n 500 --seed 3 --aspect 1:2:3 > "$T/p3" 2>/dev/null
+	awk '/^# domain/ { X = $5; Y = $6 } /^#/ { next }
+	     $1 < 0 || $1 > X || $2 < 0 || $2 > Y { bad++ } END { exit bad > 0 }' "$T/p2"
+	awk '/^# domain/ { X = $6; Y = $7; Z = $8 } /^#/ { next }
+	     $1 < 0 || $1 > X || $2 < 0 || $2 > Y || $3 < 0 || $3 > Z { bad++ } END { exit bad > 0 }' "$T/p3"
+}
+
+@test "dempack random: --aspect sets the domain's side ratios" {
+	dempack random -n 100 --seed 3 --aspect 3:1 > "$T/p2" 2>/dev/null
+	dempack random --dim 3 -n 100 --seed 3 --aspect 1:2:3 > "$T/p3" 2>/dev/null
+	d2=$(grep '^# domain' "$T/p2")
+	d3=$(grep '^# domain' "$T/p3")
+	set -- $d2
+	close_to "$5" "$(awk -v y="$6" 'BEGIN { printf "%.17g", 3 * y }')" 1e-12
+	set -- $d3
+	close_to "$7" "$(awk -v x="$6" 'BEGIN { printf "%.17g", 2 * x }')" 1e-12
+	close_to "$8" "$(awk -v x="$6" 'BEGIN { printf "%.17g", 3 * x }')" 1e-12
+}
+
+@test "dempack random: the same --seed gives identical output, other seeds differ" {
+	dempack random -n 300 --lambda 5 --seed 7 > "$T/a" 2>/dev/null
+	dempack random -n 300 --lambda 5 --seed 7 > "$T/b" 2>/dev/null
+	dempack random -n 300 --lambda 5 --seed 8 > "$T/c" 2>/dev/null
+	cmp "$T/a" "$T/b"
+	! cmp -s <(grep -v '^#' "$T/a") <(grep -v '^#' "$T/c")
+	# and in 3D, binary
+	dempack random --dim 3 -n 300 --seed 7 -b > "$T/a" 2>/dev/null
+	dempack random --dim 3 -n 300 --seed 7 -b > "$T/b" 2>/dev/null
+	cmp "$T/a" "$T/b"
+}
+
+@test "dempack random: without --seed a seed is drawn, written, and reproduces the run" {
+	dempack random -n 50 > "$T/a" 2>/dev/null
+	seed=$(sed -n 's/^# seed //p' "$T/a")
+	[[ $seed =~ ^[0-9]+$ ]]
+	grep -q "^# prog dempack .* seed=$seed args: random -n 50\$" "$T/a"
+	dempack random -n 50 --seed "$seed" > "$T/b" 2>/dev/null
+	cmp <(grep -v '^# prog' "$T/a") <(grep -v '^# prog' "$T/b")
+}
+
+@test "dempack random: the density of the '# domain' box is the target to 1e-9, 2D, every law" {
+	for law in mono urd nrd lnrd; do
+		for rho in 0.05 0.6 1; do
+			dempack random -n 700 --law "$law" --lambda 10 --rmin '0.3 mm' \
+				--density "$rho" --aspect 2:1 --seed 5 > "$T/p" 2>/dev/null
+			got=$(density "$T/p" 2)
+			echo "law $law rho $rho: $got"
+			close_to "$got" "$rho" 1e-9
+		done
+	done
+}
+
+@test "dempack random: the density of the '# domain' box is the target to 1e-9, 3D, every law" {
+	for law in mono urd nrd lnrd; do
+		for rho in 0.1 0.37; do
+			dempack random --dim 3 -n 700 --law "$law" --lambda 4 --density "$rho" \
+				--aspect 1:2:1 --seed 6 > "$T/p" 2>/dev/null
+			got=$(density "$T/p" 3)
+			echo "law $law rho $rho: $got"
+			close_to "$got" "$rho" 1e-9
+		done
+	done
+}
+
+@test "dempack random: radii lie in [rmin, lambda rmin] for every law; mono gives rmin" {
+	for dim in 2 3; do
+		for law in mono urd nrd lnrd; do
+			dempack random --dim "$dim" -n 2000 --law "$law" --rmin 0.5 --lambda 8 --seed 9 > "$T/p" 2>/dev/null
+			read -r lo hi < <(awk -v c=$((dim + 1)) '!/^#/ { r = $c; if (n++ == 0 || r < lo) lo = r; if (r > hi) hi = r }
+				END { printf "%.17g %.17g\n", lo, hi }' "$T/p")
+			echo "dim $dim $law: [$lo, $hi]"
+			awk -v lo="$lo" -v hi="$hi" 'BEGIN { exit !(lo >= 0.5 && hi <= 4) }'
+			if [ "$law" = mono ]; then
+				[ "$lo" = 0.5 ] && [ "$hi" = 0.5 ]
+			else
+				# the laws spread the radii over the range
+				awk -v lo="$lo" -v hi="$hi" 'BEGIN { exit !(lo < 1 && hi > 3) }'
+			fi
+		done
+	done
+}
+
+@test "dempack random: nrd and lnrd centre where radius.h says (mean, median)" {
+	# nrd: mean (rmin + rmax)/2 = 4.5; lnrd: median exp((ln 1 + ln 8)/2) = sqrt(8)
+	dempack random -n 4000 --law nrd --lambda 8 --seed 2 > "$T/n" 2>/dev/null
+	dempack random -n 4001 --law lnrd --lambda 8 --seed 2 > "$T/l" 2>/dev/null
+	mean=$(awk '!/^#/ { s += $3; n++ } END { printf "%.17g", s / n }' "$T/n")
+	median=$(grep -v '^#' "$T/l" | cut -d' ' -f3 | sort -g | sed -n 2001p)
+	echo "nrd mean $mean, lnrd median $median"
+	close_to "$mean" 4.5 0.01
+	close_to "$median" 2.8284271247461903 0.03
+}
+
+@test "dempack random: --rmin '2 mm' gives radii of 0.002 m" {
+	dempack random -n 10 --law mono --rmin '2 mm' --seed 1 > "$T/p" 2>/dev/null
+	[ "$(grep -v '^#' "$T/p" | cut -d' ' -f3 | sort -u)" = 0.002 ]
+	grep -q '^# method random law=mono rmin=0.002 ' "$T/p"
+	dempack random -n 10 --law urd --lambda 2 --rmin '2 mm' --seed 1 > "$T/p" 2>/dev/null
+	awk '!/^#/ && ($3 < 0.002 || $3 > 0.004) { exit 1 }' "$T/p"
+}
+
+@test "dempack random -b: text header, one block of records holding the text values, trailer" {
+	dempack random -n 800 --lambda 4 --seed 11 > "$T/t" 2>/dev/null
+	dempack random -n 800 --lambda 4 --seed 11 -b > "$T/b" 2>/dev/null
+	cmp <(grep -v '^# prog' "$T/t" | sed '/^# data/q' | sed 's/^# format text$/# format binary/') \
+	    <(head -c "$(grep -abx '# data' "$T/b" | cut -d: -f1)" "$T/b" | grep -av '^# prog'; echo '# data')
+	# after "# data": count 800, 800 records of 3 f64, count 0, "# end 800"
+	h=$(($(grep -abx '# data' "$T/b" | cut -d: -f1) + 7))
+	[ "$(wc -c < "$T/b")" -eq $((h + 4 + 800 * 24 + 4 + 10)) ]
+	[ "$(od -An -tu4 -j "$h" -N 4 "$T/b" | tr -d ' ')" = 800 ]
+	[ "$(od -An -tu4 -j $((h + 4 + 800 * 24)) -N 4 "$T/b" | tr -d ' ')" = 0 ]
+	[ "$(tail -c 10 "$T/b")" = "# end 800" ]
+	# the records are the text rows, bit for bit (the text is exact)
+	paste -d' ' <(grep -v '^#' "$T/t") <(od -An -v -tf8 -w24 -j $((h + 4)) -N $((800 * 24)) "$T/b") |
+		awk 'NF != 6 || $1 != $4 || $2 != $5 || $3 != $6 { bad++ } END { exit bad > 0 || NR != 800 }'
+}
+
+@test "dempack random -b: demdetect reads it back to the same pairs as the text" {
+	dempack random -n 800 --lambda 4 --seed 11 > "$T/t" 2>/dev/null
+	dempack random -n 800 --lambda 4 --seed 11 -b > "$T/b" 2>/dev/null
+	nt=$(demdetect -c "$T/t" 2>/dev/null)
+	[ "$nt" -gt 0 ]
+	[ "$(demdetect -c "$T/b" 2>/dev/null)" = "$nt" ]
+	cmp <(demdetect "$T/t" 2>/dev/null | grep -v '^# prog') <(demdetect "$T/b" 2>/dev/null | grep -v '^# prog')
+}
+
+@test "dempack random -z and -z -b: gzip data that demdetect reads to the same pairs as text" {
+	dempack random --dim 3 -n 800 --seed 12 > "$T/t" 2>/dev/null
+	dempack random --dim 3 -n 800 --seed 12 -z > "$T/z" 2>/dev/null
+	dempack random --dim 3 -n 800 --seed 12 -z -b > "$T/zb" 2>/dev/null
+	[ "$(head -c 2 "$T/z" | od -An -tx1 | tr -d ' ')" = 1f8b ]
+	[ "$(head -c 2 "$T/zb" | od -An -tx1 | tr -d ' ')" = 1f8b ]
+	# the text stream is the gzip stream uncompressed, apart from the args
+	cmp <(grep -v '^# prog' "$T/t") <(gzip -dc "$T/z" | grep -v '^# prog')
+	nt=$(demdetect -c "$T/t" 2>/dev/null)
+	[ "$nt" -gt 0 ]
+	[ "$(demdetect -c "$T/z" 2>/dev/null)" = "$nt" ]
+	[ "$(demdetect -c "$T/zb" 2>/dev/null)" = "$nt" ]
+}
+
+@test "dempack -o FILE: the complete stream in FILE, nothing on stdout, no temporary file left" {
+	mkdir "$T/d"
+	run --separate-stderr dempack random -n 100 --seed 1 -o "$T/d/p.txt"
+	[ "$status" -eq 0 ]
+	[ -z "$output" ]
+	[ "$(ls "$T/d")" = p.txt ]
+	dempack random -n 100 --seed 1 > "$T/ref" 2>/dev/null
+	cmp <(grep -v '^# prog' "$T/ref") <(grep -v '^# prog' "$T/d/p.txt")
+	[ "$(stat -c %a "$T/d/p.txt")" = 644 ]
+}
+
+@test "dempack -o FILE: on bad input no FILE is created and no temporary file is left" {
+	mkdir "$T/d"
+	run dempack random -n 100 --density 2 -o "$T/d/p.txt"
+	[ "$status" -ne 0 ]
+	[ -z "$(ls -A "$T/d")" ]
+}
+
+@test "dempack -o FILE: a write failure midway leaves no FILE, no temporary file, old FILE intact (exit 4)" {
+	mkdir "$T/d"
+	echo old > "$T/d/p.txt"
+	# a file size limit of 8 blocks makes the write fail after a few kB
+	run --separate-stderr bash -c "trap '' XFSZ; ulimit -f 8; dempack random -n 100000 --seed 1 -o '$T/d/p.txt'"
+	echo "$stderr"
+	[ "$status" -eq 4 ]
+	[[ $stderr == *"dempack: $T/d/p.txt: "* ]]
+	[ "$(ls -A "$T/d")" = p.txt ]
+	[ "$(cat "$T/d/p.txt")" = old ]
+}
+
+@test "dempack -o into a missing folder: exit 4, message names the file" {
+	run --separate-stderr dempack random -n 10 -o "$T/none/p.txt"
+	[ "$status" -eq 4 ]
+	[[ $stderr == "dempack: $T/none/p.txt: No such file or directory"* ]]
+}
+
+@test "dempack: a write error on standard output is exit 4 with a message" {
+	[ -w /dev/full ] || skip "no /dev/full"
+	run --separate-stderr bash -c 'dempack random -n 50000 --seed 1 > /dev/full'
+	[ "$status" -eq 4 ]
+	[[ $stderr == *"dempack: stdout: No space left on device"* ]]
+}
+
+@test "dempack --dump-scene: the resolved pack section, every default, on stdout" {
+	run --separate-stderr dempack --dump-scene
+	[ "$status" -eq 0 ]
+	[ -z "$stderr" ]
+	expected='pack:
+  method: random
+  dim: 2
+  n: 1000
+  density: 0.6
+  radius:
+    law: urd
+    min: 1 m
+    lambda: 1
+  aspect: [1, 1]'
+	[ "$output" = "$expected" ]
+}
+
+@test "dempack --dump-scene: its output loads with -s and gives the same stream" {
+	for dim in 2 3; do
+		dempack random --dim "$dim" -n 300 --law lnrd --lambda 3 --rmin '0.7 mm' \
+			--density 0.45 --dump-scene > "$T/s.yaml"
+		grep -q 'min: 0.0007 m' "$T/s.yaml"
+		dempack random --dim "$dim" -n 300 --law lnrd --lambda 3 --rmin '0.7 mm' \
+			--density 0.45 --seed 4 > "$T/a" 2>/dev/null
+		dempack random -s "$T/s.yaml" --seed 4 > "$T/b" 2>/dev/null
+		cmp <(grep -v '^# prog' "$T/a") <(grep -v '^# prog' "$T/b")
+	done
+	# options still override the scene
+	dempack random -s "$T/s.yaml" -n 7 --seed 4 > "$T/c" 2>/dev/null
+	[ "$(rows "$T/c")" -eq 7 ]
+}
+
+@test "dempack -n 0: a valid empty stream" {
+	run --separate-stderr dempack random -n 0 --seed 1
+	[ "$status" -eq 0 ]
+	[ "${lines[-1]}" = "# end 0" ]
+	[ "$(echo "$output" | grep -vc '^#')" -eq 0 ]
+}
+
+@test "dempack: the cost line is the last line of stderr: wall_s cpu_s rss_mb pack_s objects" {
+	run --separate-stderr dempack random -n 123 --seed 1
+	[ "$status" -eq 0 ]
+	[[ ${stderr_lines[-1]} =~ ^dempack:\ cost:\ wall_s=[0-9.]+\ cpu_s=[0-9.]+\ rss_mb=[0-9.]+\ pack_s=[0-9.]+\ objects=123$ ]]
+	# also with -q and with -o
+	run --separate-stderr dempack random -n 5 --seed 1 -q -o "$T/p"
+	[ "$status" -eq 0 ]
+	[[ ${stderr_lines[-1]} == "dempack: cost: wall_s="*" objects=5" ]]
+}
