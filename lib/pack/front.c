@@ -1,0 +1,853 @@
+/* front.c - the advancing front packing of disks (Han 2004, Ch. 5.2).
+ *
+ * Objects.  Walls and disks share one index space: walls are objects
+ * 0 .. nw-1 (lines: a point and a unit inward normal, "disks of infinite
+ * radius", Ch. 5.2.2), disks follow in the order they were made.  Per-object
+ * data are structure-of-arrays.
+ *
+ * Orientation.  A front segment a -> b takes its new disk on its LEFT and
+ * has the filled region on its right.  The open form then reads as in the
+ * thesis (left wall -> bottom -> right wall, disks above); the closed front
+ * runs clockwise, the mirror image of Fig. 5.4, whose front is
+ * anticlockwise with new disks on the right.  Angles of Fig. 5.7 are
+ * measured clockwise to match.
+ *
+ * The front is a doubly linked list through next[]/prev[] (a disk is on the
+ * front at most once, so the object index is the node): circular in the
+ * closed form, from the left wall (head) to the right wall (tail) in the
+ * open form.  live[a] says whether the segment a -> next[a] may still be
+ * chosen as active; nlive counts the live segments.
+ *
+ * Overlaps.  Every candidate is checked against every placed disk near it
+ * through a uniform grid (cells as wide as the largest disk, so the 3 x 3
+ * block around the candidate's cell holds every disk it can touch), and
+ * against the walls.  The front check of Fig. 5.5 / Fig. 5.7 is then only a
+ * classification of the overlapping disks that are on the front: the walks
+ * forward from m and backward from p stop as soon as all of them are
+ * placed, or at the check limit, the 180-degree rule or the list's ends.
+ * A candidate that overlaps nothing the walks could place -- a disk behind
+ * the front (in a hole left by cases (b)-(d)), or a front disk beyond the
+ * check limit -- is never accepted: its segment is given up and the front
+ * moves on.  So no accepted disk overlaps another, whatever the check
+ * limit.
+ *
+ * Progress (nothing can run forever).  In one attempt each intermediate
+ * step of cases (b)-(d) moves c back or n on over at least one front node,
+ * and the walks never pass each other, so an attempt takes at most as many
+ * steps as the front has nodes.  Each pass of the main loop then either
+ *   1. places a disk: finitely many fit, as disks never overlap and all
+ *      lie within a bounded distance of the domain (each is reached from a
+ *      live segment, which has an end inside, in at most front-size steps
+ *      of a few radii);
+ *   2. kills a live segment (a failure without gravity): live segments are
+ *      only born when a disk is placed, two at a time;
+ *   3. (gravity) tags a live segment as refused for the current radius
+ *      (unstable seat, or a failure): at most once per segment and radius;
+ *      when every live segment is tagged the radius is dropped, and after
+ *      MAXDROPS drops in a row the packing stops.
+ * The search for the next live segment walks at most once round the front.
+ */
+#include "pack/front.h"
+
+#include <float.h>
+#include <limits.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/consts.h"
+
+const char *const dem_front_form_names[] = {"closed", "open", NULL};
+
+enum { NIL = -1, OFF = -2 };    /* link at an open end; node not on the front */
+
+/* Overlap allowed between accepted disks, relative to the smaller radius:
+ * touching disks computed in floating point (the hexagonal lattice is all
+ * contacts) must not count as overlapping. */
+#define TOUCH 1e-10
+/* Radii in a row that no live segment could take stably (gravity) before
+ * the packing is taken as complete. */
+#define MAXDROPS 16
+/* Largest grid, in cells (4 bytes each). */
+#define MAXCELLS (1L << 28)
+
+enum { PLACED, FAIL, UNSTABLE_FWD, UNSTABLE_BWD };
+
+struct wall {
+	double qx, qy;          /* a point of the line */
+	double nx, ny;          /* unit normal into the domain */
+};
+
+struct packer {
+	const dem_front_spec_t *s;
+	int closed, gravity;
+	long limit;             /* forward/backward check length */
+	dem_front_stats_t *st;
+
+	int nw;                 /* walls: objects 0 .. nw-1 */
+	struct wall w[4];
+	int n, cap;             /* objects so far, room */
+	double *x, *y, *r;
+	int *prev, *next;       /* front links (OFF: not on the front) */
+	unsigned char *live;    /* segment a -> next[a] may be chosen */
+	uint32_t *hit;          /* == serial: overlaps the current candidate */
+	uint32_t *tag;          /* == radial: segment refused this radius (gravity) */
+	int *cnext;             /* next disk in the same grid cell */
+	int *sup;               /* the two supports of each disk (gravity) */
+
+	double gx, gy, ginv;    /* grid origin, 1 / cell size */
+	int gnx, gny;
+	int *cell;              /* first disk of each cell, NIL if none */
+
+	int fhead, ftail;       /* open form: the walls at the ends */
+	int fsize, nlive;       /* nodes on the front, live segments */
+	double ox, oy;          /* closed form: point O of Fig. 5.7 */
+	uint32_t serial, radial;
+
+	int *ov;                /* objects overlapping the current candidate */
+	int nov, ovcap;
+};
+
+/* ---- storage ---------------------------------------------------------- */
+
+static int grow(void **a, size_t n, size_t size)
+{
+	void *q = realloc(*a, n * size);
+	if (!q)
+		return -1;
+	*a = q;
+	return 0;
+}
+
+static int reserve(struct packer *p, int need)
+{
+	if (need <= p->cap)
+		return 0;
+	size_t cap = p->cap ? (size_t)p->cap : 64;
+	while (cap < (size_t)need)
+		cap *= 2;
+	if (cap > INT_MAX)
+		cap = INT_MAX;
+	if (grow((void **)&p->x, cap, sizeof *p->x) ||
+	    grow((void **)&p->y, cap, sizeof *p->y) ||
+	    grow((void **)&p->r, cap, sizeof *p->r) ||
+	    grow((void **)&p->prev, cap, sizeof *p->prev) ||
+	    grow((void **)&p->next, cap, sizeof *p->next) ||
+	    grow((void **)&p->live, cap, sizeof *p->live) ||
+	    grow((void **)&p->hit, cap, sizeof *p->hit) ||
+	    grow((void **)&p->tag, cap, sizeof *p->tag) ||
+	    grow((void **)&p->cnext, cap, sizeof *p->cnext) ||
+	    (p->gravity && grow((void **)&p->sup, 2 * cap, sizeof *p->sup)))
+		return -1;
+	p->cap = (int)cap;
+	return 0;
+}
+
+static void release(struct packer *p)
+{
+	free(p->x);
+	free(p->y);
+	free(p->r);
+	free(p->prev);
+	free(p->next);
+	free(p->live);
+	free(p->hit);
+	free(p->tag);
+	free(p->cnext);
+	free(p->sup);
+	free(p->cell);
+	free(p->ov);
+}
+
+/* ---- grid ------------------------------------------------------------- */
+
+/* Cell index along one axis, clamped to the grid: clamping keeps two
+ * points less than a cell apart in the same or adjacent cells, so a disk
+ * that strays beyond the grid is still found, only less quickly. */
+static int cell_of(double v, double v0, double inv, int nc)
+{
+	double t = (v - v0) * inv;
+	if (!(t >= 0))
+		return 0;
+	if (t >= nc)
+		return nc - 1;
+	return (int)t;
+}
+
+static void grid_insert(struct packer *p, int i)
+{
+	int k = cell_of(p->y[i], p->gy, p->ginv, p->gny) * p->gnx +
+		cell_of(p->x[i], p->gx, p->ginv, p->gnx);
+	p->cnext[i] = p->cell[k];
+	p->cell[k] = i;
+}
+
+static int ov_push(struct packer *p, int j)
+{
+	if (p->nov == p->ovcap) {
+		int cap = p->ovcap ? 2 * p->ovcap : 32;
+		if (grow((void **)&p->ov, (size_t)cap, sizeof *p->ov))
+			return -1;
+		p->ovcap = cap;
+	}
+	p->ov[p->nov++] = j;
+	p->hit[j] = p->serial;
+	return 0;
+}
+
+/* Collect into ov every object that the disk (px, py, r) overlaps; return
+ * how many of them are on the front, or -1 without memory. */
+static int collect(struct packer *p, double px, double py, double r)
+{
+	int ix = cell_of(px, p->gx, p->ginv, p->gnx);
+	int iy = cell_of(py, p->gy, p->ginv, p->gny);
+	int onfront = 0;
+
+	if (++p->serial == 0) {         /* wrapped: stale marks could match */
+		memset(p->hit, 0, (size_t)p->n * sizeof *p->hit);
+		p->serial = 1;
+	}
+	p->nov = 0;
+	for (int cy = iy > 0 ? iy - 1 : 0; cy <= iy + 1 && cy < p->gny; cy++)
+		for (int cx = ix > 0 ? ix - 1 : 0; cx <= ix + 1 && cx < p->gnx; cx++)
+			for (int j = p->cell[cy * p->gnx + cx]; j != NIL; j = p->cnext[j]) {
+				double dx = px - p->x[j], dy = py - p->y[j];
+				double rj = p->r[j];
+				double d = r + rj - TOUCH * (r < rj ? r : rj);
+				if (dx * dx + dy * dy < d * d) {
+					if (ov_push(p, j))
+						return -1;
+					onfront += p->next[j] != OFF;
+				}
+			}
+	for (int k = 0; k < p->nw; k++) {
+		const struct wall *w = &p->w[k];
+		if ((px - w->qx) * w->nx + (py - w->qy) * w->ny < r * (1 - TOUCH)) {
+			if (ov_push(p, k))
+				return -1;
+			onfront += p->next[k] != OFF;
+		}
+	}
+	return onfront;
+}
+
+/* ---- geometry --------------------------------------------------------- */
+
+/* The centre of a disk of radius r touching objects a and b, on the left
+ * of a -> b (Fig. 5.5, step 1).  Returns 0 when there is none (the two are
+ * too far apart, or two parallel walls). */
+static int tangent(const struct packer *p, int a, int b, double r,
+		   double *px, double *py)
+{
+	if (a >= p->nw && b >= p->nw) {
+		/* two circles of radii ra + r and rb + r about the centres */
+		double dx = p->x[b] - p->x[a], dy = p->y[b] - p->y[a];
+		double d2 = dx * dx + dy * dy, d = sqrt(d2);
+		double da = p->r[a] + r, db = p->r[b] + r;
+		if (!(d > 0) || d > da + db)
+			return 0;
+		double t = (da * da - db * db + d2) / (2 * d);
+		double h2 = da * da - t * t;
+		if (h2 < 0) {
+			if (h2 < -1e-12 * da * da)
+				return 0;
+			h2 = 0;         /* rounding: the gap is exactly 2r */
+		}
+		double h = sqrt(h2);
+		*px = p->x[a] + (t * dx - h * dy) / d;
+		*py = p->y[a] + (t * dy + h * dx) / d;
+		return 1;
+	}
+	if (a < p->nw && b < p->nw) {
+		/* a corner: where the two lines moved inwards by r cross */
+		const struct wall *u = &p->w[a], *v = &p->w[b];
+		double det = u->nx * v->ny - u->ny * v->nx;
+		if (fabs(det) < 1e-12)
+			return 0;
+		double cu = r + u->qx * u->nx + u->qy * u->ny;
+		double cv = r + v->qx * v->nx + v->qy * v->ny;
+		*px = (cu * v->ny - cv * u->ny) / det;
+		*py = (u->nx * cv - v->nx * cu) / det;
+		return 1;
+	}
+	/* a wall and a disk: the line moved inwards by r against the circle of
+	 * radius rd + r.  In the frame (normal n, tangent tv) the normal
+	 * coordinate is the wall's plus r, so an axis-parallel wall gives the
+	 * centre's distance from it rounded only once. */
+	int k = a < p->nw ? a : b, d = a < p->nw ? b : a;
+	const struct wall *w = &p->w[k];
+	/* tangent direction: left of (disk -> wall) = left of -n, or left of
+	 * (wall -> disk) = left of n */
+	double tx = a < p->nw ? -w->ny : w->ny, ty = a < p->nw ? w->nx : -w->nx;
+	double s = (p->x[d] - w->qx) * w->nx + (p->y[d] - w->qy) * w->ny;
+	double dn = r - s, dd = p->r[d] + r;
+	double t2 = dd * dd - dn * dn;
+	if (t2 < 0) {
+		if (t2 < -1e-12 * dd * dd)
+			return 0;
+		t2 = 0;
+	}
+	double cn = w->qx * w->nx + w->qy * w->ny + r;
+	double ct = p->x[d] * tx + p->y[d] * ty + sqrt(t2);
+	*px = cn * w->nx + ct * tx;
+	*py = cn * w->ny + ct * ty;
+	return 1;
+}
+
+/* Is object i's centre outside the region still to be filled?  Closed
+ * form: outside the rectangle (Ch. 5.2.1, segment deactivation); open
+ * form: above the lid (Ch. 5.2.2). */
+static int outside(const struct packer *p, int i)
+{
+	const dem_front_spec_t *s = p->s;
+	if (!p->closed)
+		return p->y[i] > s->hi[1];
+	return p->x[i] < s->lo[0] || p->x[i] > s->hi[0] ||
+	       p->y[i] < s->lo[1] || p->y[i] > s->hi[1];
+}
+
+/* A segment is deactivated when both its disks lie outside; a wall end
+ * follows the other end; a corner (two walls) stays live. */
+static int seg_live(const struct packer *p, int a, int b)
+{
+	if (a < p->nw && b < p->nw)
+		return 1;
+	if (a < p->nw)
+		return !outside(p, b);
+	if (b < p->nw)
+		return !outside(p, a);
+	return !(outside(p, a) && outside(p, b));
+}
+
+/* Signed angle D_s O D_t of Fig. 5.7(a), positive clockwise (our front's
+ * sense of travel). */
+static double angle(const struct packer *p, int s, int t)
+{
+	double ax = p->x[s] - p->ox, ay = p->y[s] - p->oy;
+	double bx = p->x[t] - p->ox, by = p->y[t] - p->oy;
+	return atan2(-(ax * by - ay * bx), ax * bx + ay * by);
+}
+
+/* ---- the front -------------------------------------------------------- */
+
+/* Make a -> b a segment of the front (a new segment: it is live unless
+ * both ends lie outside, and untried). */
+static void link(struct packer *p, int a, int b)
+{
+	p->nlive -= p->live[a];
+	p->next[a] = b;
+	p->prev[b] = a;
+	p->live[a] = (unsigned char)seg_live(p, a, b);
+	p->nlive += p->live[a];
+	p->tag[a] = 0;
+}
+
+/* Take the nodes a .. b (following next) off the front. */
+static void unlink_range(struct packer *p, int a, int b)
+{
+	for (int d = a;;) {
+		int nx = p->next[d];
+		p->nlive -= p->live[d];
+		p->live[d] = 0;
+		p->next[d] = p->prev[d] = OFF;
+		p->fsize--;
+		if (d == b)
+			break;
+		d = nx;
+	}
+}
+
+static void kill(struct packer *p, int a)
+{
+	p->nlive -= p->live[a];
+	p->live[a] = 0;
+}
+
+/* A new disk object (not yet on the front); -1 without room. */
+static int add_disk(struct packer *p, double x, double y, double r)
+{
+	if (p->n == INT_MAX || reserve(p, p->n + 1))
+		return -1;
+	int i = p->n++;
+	p->x[i] = x;
+	p->y[i] = y;
+	p->r[i] = r;
+	p->prev[i] = p->next[i] = OFF;
+	p->live[i] = 0;
+	p->hit[i] = 0;
+	p->tag[i] = 0;
+	if (p->gravity)
+		p->sup[2 * i] = p->sup[2 * i + 1] = NIL;
+	grid_insert(p, i);
+	p->st->placed++;
+	return i;
+}
+
+/* The overlapping objects on the front, placed relative to the active
+ * segment c -> n: *j the first one met going forward from m (a subsequent
+ * disk), *u the first met going backward from p (a preceding disk), NIL if
+ * none; *js, *us how many steps the walks took to meet them.  Closed form:
+ * a disk is subsequent while the angle accumulated from c stays within 180
+ * degrees, preceding while the angle accumulated backwards does (Fig.
+ * 5.7(b)); the two walks share none of the room nodes of the front (all
+ * but c and n).  Open form: the list's order decides, no angles needed
+ * (Ch. 5.2.2).  Both walks stop at the check limit, and as soon as every
+ * overlapping front object has been met (in either walk), which keeps
+ * them short. */
+static void classify(const struct packer *p, int c, int n, long room,
+		     int onfront, int *pu, int *pj, long *us, long *js)
+{
+	int u = NIL, j = NIL, found = 0;
+	int f = p->next[n], fp = n, b = p->prev[c], bp = c;
+	int fdone = 0, bdone = 0;
+	long kf = 0, kb = 0;
+	double af = p->closed ? angle(p, c, n) : 0, ab = 0;
+
+	while (!(fdone && bdone) && found < onfront) {
+		if (!fdone) {
+			if (f < 0 || kf >= p->limit || room <= 0)
+				fdone = 1;
+			else if (p->closed && (af += angle(p, fp, f)) > DEM_PI)
+				fdone = 1;
+			else {
+				kf++;
+				room--;
+				if (p->hit[f] == p->serial) {
+					found++;
+					if (j == NIL) {
+						j = f;
+						*js = kf;
+					}
+				}
+				fp = f;
+				f = p->next[f];
+			}
+		}
+		if (!bdone && found < onfront) {
+			if (b < 0 || kb >= p->limit || room <= 0)
+				bdone = 1;
+			else if (p->closed && (ab += angle(p, b, bp)) > DEM_PI)
+				bdone = 1;
+			else {
+				kb++;
+				room--;
+				if (p->hit[b] == p->serial) {
+					found++;
+					if (u == NIL) {
+						u = b;
+						*us = kb;
+					}
+				}
+				bp = b;
+				b = p->prev[b];
+			}
+		}
+	}
+	*pu = u;
+	*pj = j;
+}
+
+/* Where an object holds up a disk centred at (px, py): a disk at its
+ * centre, a wall at the foot of the perpendicular (the contact point). */
+static void support_point(const struct packer *p, int k, double px, double py,
+			  double *sx)
+{
+	if (k < p->nw) {
+		const struct wall *w = &p->w[k];
+		double d = (px - w->qx) * w->nx + (py - w->qy) * w->ny;
+		*sx = px - d * w->nx;
+	} else {
+		*sx = p->x[k];
+	}
+}
+
+/* Fig. 5.9: the disk rests on c and n when the vertical through its centre
+ * meets the segment between their support points.  The disk lies left of
+ * c -> n, so with c's point left of n's it is above the segment and the
+ * two contact forces are compressive.  Otherwise say on which side gravity
+ * misses, so the front can move that way (downhill). */
+static int stability(const struct packer *p, int c, int n, double px, double py)
+{
+	double a, b;
+	support_point(p, c, px, py, &a);
+	support_point(p, n, px, py, &b);
+	if (px < a)
+		return UNSTABLE_BWD;
+	if (px > b)
+		return UNSTABLE_FWD;
+	return PLACED;
+}
+
+/* Place a disk of radius r on the active segment *c -> *n: Steps 1 and 2
+ * of Ch. 5.2.1 with the four cases of Fig. 5.5.  The intermediate
+ * segments of cases (b)-(d) are tentative: the front is left as it was
+ * until a disk is placed, and only then are the nodes between the final
+ * c and n taken off it.  So a candidate refused at the end (no room, an
+ * overlap the front check cannot place, or -- gravity -- an unstable seat)
+ * costs nothing: no bridge over a pocket that stays empty, no real contact
+ * hidden behind the front.  On return *c -> *n is the segment last tried
+ * and, when PLACED, *i the new disk.  -1 without memory. */
+static int attempt(struct packer *p, int *pc, int *pn, double r, int *pi)
+{
+	int c = *pc, n = *pn, res;
+	/* room nodes of the closed front: all but c and n, less the nodes
+	 * dropped tentatively */
+	long room = p->closed ? p->fsize - 2 : LONG_MAX;
+
+	for (;;) {
+		double px, py;
+		p->st->attempts++;
+		if (!tangent(p, c, n, r, &px, &py)) {
+			res = FAIL;
+			break;
+		}
+		int onfront = collect(p, px, py, r);
+		if (onfront < 0)
+			return -1;
+		if (p->nov == 0) {
+			/* Fig. 5.5(a): no overlap */
+			if (p->gravity && (res = stability(p, c, n, px, py)) != PLACED) {
+				p->st->unstable++;
+				break;
+			}
+			int i = add_disk(p, px, py, r);
+			if (i < 0)
+				return -1;
+			if (p->gravity) {
+				p->sup[2 * i] = c;
+				p->sup[2 * i + 1] = n;
+			}
+			/* commit: the nodes between c and n enclose holes */
+			if (p->next[c] != n)
+				unlink_range(p, p->next[c], p->prev[n]);
+			link(p, c, i);
+			link(p, i, n);
+			p->fsize++;
+			if ((size_t)p->fsize > p->st->front_max)
+				p->st->front_max = (size_t)p->fsize;
+			*pi = i;
+			res = PLACED;
+			break;
+		}
+		int u, j;
+		long us = 0, js = 0;
+		classify(p, c, n, room, onfront, &u, &j, &us, &js);
+		if (u == NIL && j == NIL) {
+			/* the overlap is with a disk behind the front or beyond
+			 * the check limit: no intermediate segment can be built
+			 * from it, so this segment is given up */
+			res = FAIL;
+			break;
+		}
+		/* Fig. 5.5(b): drop n .. k, the js nodes before j;
+		 * Fig. 5.5(c): drop v .. c, the us nodes after u;
+		 * Fig. 5.5(d): both.  The dropped part of the front and the
+		 * intermediate segment u -> j enclose a hole left unfilled. */
+		if (j != NIL) {
+			n = j;
+			room -= js;
+		}
+		if (u != NIL) {
+			c = u;
+			room -= us;
+		}
+		p->st->cases[j != NIL && u != NIL ? 2 : j != NIL ? 0 : 1]++;
+	}
+	*pc = c;
+	*pn = n;
+	return res;
+}
+
+/* The next segment at or after node a that may take the current disk:
+ * live, and (gravity) not yet refused for this radius.  NIL when none
+ * (then every live segment has refused it).  Walks round the front at
+ * most once. */
+static int find_segment(const struct packer *p, int a)
+{
+	for (int k = 0; k <= p->fsize; k++) {
+		if (p->next[a] >= 0 && p->live[a] &&
+		    !(p->gravity && p->tag[a] == p->radial))
+			return a;
+		a = p->next[a];
+		if (a < 0)
+			a = p->fhead;   /* open form: past the right wall */
+	}
+	return NIL;
+}
+
+static double new_radius(struct packer *p, gsl_rng *rng)
+{
+	if (++p->radial == 0) {         /* wrapped: stale tags could match */
+		memset(p->tag, 0, (size_t)p->n * sizeof *p->tag);
+		p->radial = 1;
+	}
+	return dem_radius_draw(&p->s->law, rng);
+}
+
+/* ---- the two initial fronts ------------------------------------------- */
+
+/* Ch. 5.2.1: three touching disks about the centre of the domain; the
+ * front D1 -> D2 -> D3 -> D1 (clockwise here); O their centroid. */
+static int start_closed(struct packer *p, gsl_rng *rng, int *seg)
+{
+	const dem_front_spec_t *s = p->s;
+	double r1 = new_radius(p, rng), r2 = new_radius(p, rng), r3 = new_radius(p, rng);
+	int d1 = add_disk(p, 0, 0, r1), d2, d3;
+	if (d1 < 0 || (d2 = add_disk(p, r1 + r2, 0, r2)) < 0)
+		return -1;
+	double x3, y3;
+	tangent(p, d2, d1, r3, &x3, &y3);       /* below D1 -> D2 */
+	if ((d3 = add_disk(p, x3, y3, r3)) < 0)
+		return -1;
+	/* move the triangle's centroid to the centre; the grid is rebuilt */
+	double cx = (p->x[d1] + p->x[d2] + p->x[d3]) / 3;
+	double cy = (p->y[d1] + p->y[d2] + p->y[d3]) / 3;
+	double mx = 0.5 * (s->lo[0] + s->hi[0]), my = 0.5 * (s->lo[1] + s->hi[1]);
+	for (int i = 0; i < p->gnx * p->gny; i++)
+		p->cell[i] = NIL;
+	for (int i = d1; i <= d3; i++) {
+		p->x[i] += mx - cx;
+		p->y[i] += my - cy;
+		grid_insert(p, i);
+	}
+	p->ox = mx;
+	p->oy = my;
+	link(p, d1, d2);
+	link(p, d2, d3);
+	link(p, d3, d1);
+	p->fsize = 3;
+	p->st->front_max = 3;
+	*seg = d1;
+	return 0;
+}
+
+/* Ch. 5.2.2: the walls B_l -> B_b -> B_r as an open front; the first
+ * active segment is the bottom-left corner. */
+static void start_open(struct packer *p, int *seg)
+{
+	const dem_front_spec_t *s = p->s;
+	p->w[0] = (struct wall){s->lo[0], s->lo[1], 1, 0};     /* B_l */
+	p->w[1] = (struct wall){s->lo[0], s->lo[1], 0, 1};     /* B_b */
+	p->w[2] = (struct wall){s->hi[0], s->lo[1], -1, 0};    /* B_r */
+	p->nw = p->n = 3;
+	for (int k = 0; k < 3; k++) {
+		p->x[k] = p->y[k] = 0;
+		p->r[k] = HUGE_VAL;
+		p->live[k] = 0;
+		p->hit[k] = p->tag[k] = 0;
+		p->cnext[k] = NIL;
+	}
+	p->prev[0] = NIL;
+	p->next[2] = NIL;
+	link(p, 0, 1);
+	link(p, 1, 2);
+	p->fhead = 0;
+	p->ftail = 2;
+	p->fsize = 3;
+	p->st->front_max = 3;
+	*seg = 0;
+}
+
+/* ---- the advance ------------------------------------------------------ */
+
+static int advance(struct packer *p, gsl_rng *rng, int seg)
+{
+	double r = new_radius(p, rng);
+	int drops = 0;
+
+	while (p->nlive > 0) {
+		int a = find_segment(p, seg);
+		if (a == NIL) {
+			/* gravity: no live segment holds this disk stably */
+			p->st->dropped++;
+			if (++drops >= MAXDROPS)
+				break;
+			r = new_radius(p, rng);
+			continue;
+		}
+		int c = a, n = p->next[a], i = NIL;
+		int res = attempt(p, &c, &n, r, &i);
+		/* c -> n: the final (maybe intermediate) segment; a: the one
+		 * chosen, which a refusal marks */
+		switch (res) {
+		case PLACED:
+			drops = 0;
+			r = new_radius(p, rng);
+			/* closed: the segment after the new ones, so the front
+			 * grows round evenly (Fig. 5.4); open: on along the
+			 * layer, and back to the left wall once the layer meets
+			 * the right wall (Ch. 5.2.2) */
+			seg = p->closed ? n : n == p->ftail ? p->fhead : i;
+			break;
+		case FAIL:
+			/* without gravity a segment given up stays dead; under
+			 * gravity the seat is sought radius by radius, so it is
+			 * only refused for this one (a smaller disk may fit
+			 * where this one met a disk it could not resolve, and
+			 * a dead valley would leave the front stranded) */
+			if (p->gravity)
+				p->tag[a] = p->radial;
+			else
+				kill(p, a);
+			p->st->failed++;
+			seg = a;
+			break;
+		case UNSTABLE_FWD:      /* Ch. 5.2.3: gravity misses beyond n, */
+			p->tag[a] = p->radial;  /* try the subsequent segment */
+			seg = n;
+			break;
+		case UNSTABLE_BWD:      /* ... before c: the preceding one */
+			p->tag[a] = p->radial;
+			seg = p->prev[c] >= 0 ? p->prev[c] : c;
+			break;
+		default:
+			return -1;
+		}
+	}
+	return 0;
+}
+
+/* ---- culling and output ----------------------------------------------- */
+
+/* Wholly inside the rectangle, to TOUCH of the radius and the rounding of
+ * the coordinates (a disk touching a wall sits at lo + r, rounded). */
+static int inside(const struct packer *p, int i)
+{
+	const dem_front_spec_t *s = p->s;
+	double r = p->r[i];
+	for (int d = 0; d < 2; d++) {
+		double v = d ? p->y[i] : p->x[i];
+		double tl = TOUCH * r + 2 * DBL_EPSILON * (fabs(s->lo[d]) + r);
+		double th = TOUCH * r + 2 * DBL_EPSILON * (fabs(s->hi[d]) + r);
+		if (v - r < s->lo[d] - tl || v + r > s->hi[d] + th)
+			return 0;
+	}
+	return 1;
+}
+
+static int check_spec(const dem_front_spec_t *s, dem_error_t *e)
+{
+	for (int d = 0; d < 2; d++)
+		if (!(isfinite(s->lo[d]) && isfinite(s->hi[d]) && s->lo[d] < s->hi[d]))
+			return dem_error_set(e, DEM_EINPUT,
+					     "advancing front: empty domain along %c: [%g, %g]",
+					     "xy"[d], s->lo[d], s->hi[d]);
+	if (!(s->law.rmin > 0 && isfinite(s->law.rmax) && s->law.rmax >= s->law.rmin))
+		return dem_error_set(e, DEM_EINPUT,
+				     "advancing front: radii must satisfy 0 < rmin <= rmax (got %g, %g)",
+				     s->law.rmin, s->law.rmax);
+	if (s->form != DEM_FRONT_CLOSED && s->form != DEM_FRONT_OPEN)
+		return dem_error_set(e, DEM_EINPUT, "advancing front: unknown form %d", (int)s->form);
+	if (s->gravity && s->form != DEM_FRONT_OPEN)
+		return dem_error_set(e, DEM_EINPUT,
+				     "advancing front: gravity needs the open form (Ch. 5.2.3)");
+	if (s->check_limit < 0)
+		return dem_error_set(e, DEM_EINPUT,
+				     "advancing front: check limit %d is negative", s->check_limit);
+	return DEM_OK;
+}
+
+/* The grid covers the domain and a margin of two cells (disks of the
+ * closed form, and the top layers of the open form, reach past it). */
+static int make_grid(struct packer *p, dem_error_t *e)
+{
+	const dem_front_spec_t *s = p->s;
+	double cs = 2 * s->law.rmax, m = 2 * cs;
+	double nx = ceil((s->hi[0] - s->lo[0] + 2 * m) / cs);
+	double ny = ceil((s->hi[1] - s->lo[1] + 2 * m) / cs);
+	if (!(nx * ny <= (double)MAXCELLS))
+		return dem_error_set(e, DEM_EIO,
+				     "advancing front: the domain holds too many disks of radius %g "
+				     "(%.3g grid cells; at most %ld)", s->law.rmax, nx * ny, MAXCELLS);
+	p->gnx = (int)nx;
+	p->gny = (int)ny;
+	p->gx = s->lo[0] - m;
+	p->gy = s->lo[1] - m;
+	p->ginv = 1 / cs;
+	p->cell = malloc((size_t)p->gnx * (size_t)p->gny * sizeof *p->cell);
+	if (!p->cell)
+		return dem_error_nomem(e, "advancing front grid");
+	for (long i = 0; i < (long)p->gnx * p->gny; i++)
+		p->cell[i] = NIL;
+	return DEM_OK;
+}
+
+int dem_pack_front(const dem_front_spec_t *s, gsl_rng *rng,
+		   dem_front_emit_fn emit, void *ctx, dem_front_stats_t *st,
+		   dem_error_t *e)
+{
+	struct packer pk = {0}, *p = &pk;
+	dem_front_stats_t st0;
+	int rc, seg;
+
+	if (!st)
+		st = &st0;
+	memset(st, 0, sizeof *st);
+	if ((rc = check_spec(s, e)))
+		return rc;
+	p->s = s;
+	p->st = st;
+	p->closed = s->form == DEM_FRONT_CLOSED;
+	p->gravity = s->gravity;
+	p->limit = s->check_limit > 0 ? s->check_limit : LONG_MAX;
+	p->fhead = p->ftail = NIL;
+	p->serial = p->radial = 0;
+
+	/* first reservation: the disks of mean square radius that fill the
+	 * rectangle (URD's E[r^2]); arrays double beyond that */
+	const dem_radius_law_t *L = &s->law;
+	double r2 = (L->rmin * L->rmin + L->rmin * L->rmax + L->rmax * L->rmax) / 3;
+	double est = (s->hi[0] - s->lo[0]) * (s->hi[1] - s->lo[1]) / (DEM_PI * r2);
+	int want = est < 1 << 20 ? (int)(1.2 * est) + 64 : 1 << 20;
+	if ((rc = make_grid(p, e)))
+		goto out;
+	if (reserve(p, want)) {
+		rc = dem_error_nomem(e, "advancing front disks");
+		goto out;
+	}
+	if (p->closed) {
+		if (start_closed(p, rng, &seg)) {
+			rc = dem_error_nomem(e, "advancing front disks");
+			goto out;
+		}
+	} else {
+		start_open(p, &seg);
+	}
+	if (advance(p, rng, seg)) {
+		rc = p->n == INT_MAX
+			? dem_error_set(e, DEM_EIO, "advancing front: more than %d disks", INT_MAX)
+			: dem_error_nomem(e, "advancing front disks");
+		goto out;
+	}
+
+	/* Cull (Fig. 5.6, Fig. 5.8(c)): keep the disks wholly inside.  Under
+	 * gravity a disk whose support was culled goes too, so every kept
+	 * disk still rests on kept disks or walls (supports come first in
+	 * the order of generation).  live[] is free now and holds the flags. */
+	unsigned char *keep = p->live;
+	for (int i = p->nw; i < p->n; i++) {
+		int k = inside(p, i);
+		if (k && p->gravity)
+			for (int h = 0; h < 2; h++) {
+				int q = p->sup[2 * i + h];
+				if (q >= p->nw && !keep[q])
+					k = 0;
+			}
+		keep[i] = (unsigned char)k;
+		if (k) {
+			st->kept++;
+			st->area += DEM_PI * p->r[i] * p->r[i];
+		}
+	}
+	st->density = st->area / ((s->hi[0] - s->lo[0]) * (s->hi[1] - s->lo[1]));
+	rc = DEM_OK;
+	for (int i = p->nw; i < p->n && rc == DEM_OK; i++)
+		if (keep[i]) {
+			double c[2] = {p->x[i], p->y[i]};
+			rc = emit(ctx, c, p->r[i]);
+		}
+out:
+	release(p);
+	return rc;
+}

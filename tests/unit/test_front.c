@@ -1,0 +1,511 @@
+/* test_front.c - the advancing front packing of disks (Han 2004, Ch. 5.2).
+ *
+ * References:
+ *   - no overlap: every pair of boxes that brute force (dem_detect_brute,
+ *     itself checked in test_detect.c) reports is checked with the exact
+ *     centre distance; allowed overlap 1e-9 of the smaller radius (issue 3,
+ *     acceptance 1);
+ *   - inside: every disk within the rectangle, to 1e-9 of its radius;
+ *   - the hexagonal lattice for equal disks, closed form (Ch. 5.2.4,
+ *     Fig. 5.10(a)): away from the boundary every disk touches exactly six
+ *     others and the covered fraction of a window, sampled on a fine
+ *     raster, is at least 0.90 (the lattice's pi / (2 sqrt 3) = 0.9069);
+ *   - gravity (Ch. 5.2.3, Fig. 5.9): every disk off the floor touches two
+ *     supports (disks or side walls) such that the vertical through its
+ *     centre meets the segment between them below the centre;
+ *   - reproducibility from the seed.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/consts.h"
+#include "core/rng.h"
+#include "detect/detect.h"
+#include "pack/front.h"
+
+#define TOL 1e-9
+
+struct set {
+	size_t n, cap;
+	double *x, *y, *r;
+	int stop_after, stop_code;      /* emit returns stop_code after that many */
+};
+
+static int collect(void *ctx, const double *x, double r)
+{
+	struct set *s = ctx;
+	if (s->stop_after && s->n == (size_t)s->stop_after)
+		return s->stop_code;
+	if (s->n == s->cap) {
+		s->cap = s->cap ? 2 * s->cap : 1024;
+		s->x = realloc(s->x, s->cap * sizeof *s->x);
+		s->y = realloc(s->y, s->cap * sizeof *s->y);
+		s->r = realloc(s->r, s->cap * sizeof *s->r);
+		assert_non_null(s->x);
+		assert_non_null(s->y);
+		assert_non_null(s->r);
+	}
+	s->x[s->n] = x[0];
+	s->y[s->n] = x[1];
+	s->r[s->n] = r;
+	s->n++;
+	return 0;
+}
+
+static void set_free(struct set *s)
+{
+	free(s->x);
+	free(s->y);
+	free(s->r);
+	memset(s, 0, sizeof *s);
+}
+
+static dem_front_spec_t spec(dem_front_form_t form, double w, double h,
+			     dem_radius_kind_t kind, double rmin, double lambda)
+{
+	dem_front_spec_t s;
+	memset(&s, 0, sizeof s);
+	s.form = form;
+	s.lo[0] = 0;
+	s.lo[1] = 0;
+	s.hi[0] = w;
+	s.hi[1] = h;
+	s.law = (dem_radius_law_t){kind, rmin, rmin * lambda};
+	return s;
+}
+
+static void run(const dem_front_spec_t *s, unsigned long seed, struct set *out,
+		dem_front_stats_t *st)
+{
+	gsl_rng *g = dem_rng_derive(seed, 0);
+	dem_error_t e;
+	assert_non_null(g);
+	dem_error_clear(&e);
+	memset(out, 0, sizeof *out);
+	int rc = dem_pack_front(s, g, collect, out, st, &e);
+	if (rc)
+		fail_msg("dem_pack_front: %d: %s", rc, e.msg);
+	gsl_rng_free(g);
+}
+
+/* The pairs of boxes that overlap, by brute force. */
+static void pairs_of(const struct set *s, dem_pairs_t *p)
+{
+	dem_boxes_t b;
+	dem_detect_opts_t o;
+	dem_error_t e;
+
+	assert_int_equal(dem_boxes_alloc(&b, 2, s->n), DEM_OK);
+	for (size_t i = 0; i < s->n; i++) {
+		b.lo[0][i] = s->x[i] - s->r[i];
+		b.hi[0][i] = s->x[i] + s->r[i];
+		b.lo[1][i] = s->y[i] - s->r[i];
+		b.hi[1][i] = s->y[i] + s->r[i];
+	}
+	dem_detect_opts_init(&o);
+	o.algo = DEM_DETECT_BRUTE;
+	dem_error_clear(&e);
+	dem_pairs_init(p);
+	assert_int_equal(dem_detect(&b, &o, p, NULL, &e), DEM_OK);
+	dem_boxes_free(&b);
+}
+
+static double gap(const struct set *s, size_t i, size_t j)
+{
+	return hypot(s->x[i] - s->x[j], s->y[i] - s->y[j]) - s->r[i] - s->r[j];
+}
+
+/* No pair overlaps by more than TOL of the smaller radius; every disk is
+ * inside [lo, hi] to TOL of its radius. */
+static void check_packing(const struct set *s, const dem_front_spec_t *sp,
+			  const char *label)
+{
+	dem_pairs_t p;
+	pairs_of(s, &p);
+	for (size_t k = 0; k < p.n; k++) {
+		size_t i = p.p[k].i, j = p.p[k].j;
+		double rm = fmin(s->r[i], s->r[j]);
+		if (gap(s, i, j) < -TOL * rm)
+			fail_msg("%s: disks %zu and %zu overlap by %g of the smaller radius",
+				 label, i, j, -gap(s, i, j) / rm);
+	}
+	dem_pairs_free(&p);
+	for (size_t i = 0; i < s->n; i++) {
+		double t = TOL * s->r[i];
+		if (s->x[i] - s->r[i] < sp->lo[0] - t || s->x[i] + s->r[i] > sp->hi[0] + t ||
+		    s->y[i] - s->r[i] < sp->lo[1] - t || s->y[i] + s->r[i] > sp->hi[1] + t)
+			fail_msg("%s: disk %zu (%g, %g; %g) is not inside", label, i,
+				 s->x[i], s->y[i], s->r[i]);
+	}
+}
+
+/* The emitted set matches the statistics: count, area, density. */
+static void check_stats(const struct set *s, const dem_front_spec_t *sp,
+			const dem_front_stats_t *st)
+{
+	double a = 0;
+	for (size_t i = 0; i < s->n; i++)
+		a += DEM_PI * s->r[i] * s->r[i];
+	assert_int_equal(st->kept, s->n);
+	assert_true(st->placed >= st->kept);
+	assert_true(fabs(st->area - a) <= 1e-12 * a);
+	double area = (sp->hi[0] - sp->lo[0]) * (sp->hi[1] - sp->lo[1]);
+	assert_true(fabs(st->density - a / area) <= 1e-12 * st->density + 1e-300);
+}
+
+struct law {
+	dem_radius_kind_t kind;
+	double rmin, lambda;
+	const char *name;
+};
+
+static const struct law laws[] = {
+	{DEM_RADIUS_MONO, 0.5, 1, "mono"},
+	{DEM_RADIUS_URD, 0.5, 2, "urd lambda 2"},
+	{DEM_RADIUS_URD, 0.1, 10, "urd lambda 10"},
+	{DEM_RADIUS_URD, 0.01, 100, "urd lambda 100"},
+	{DEM_RADIUS_NRD, 0.1, 10, "nrd lambda 10"},
+	{DEM_RADIUS_LNRD, 0.02, 100, "lnrd lambda 100"},
+};
+
+/* Both forms, every law, with and without check limits (Ch. 5.2.4): no
+ * overlap, all inside, statistics consistent, and a dense packing. */
+static void check_form(dem_front_form_t form)
+{
+	static const int limits[] = {0, 5, 1};
+	for (size_t l = 0; l < sizeof laws / sizeof laws[0]; l++)
+		for (size_t k = 0; k < 3; k++) {
+			dem_front_spec_t s = spec(form, 70, 50, laws[l].kind,
+						  laws[l].rmin, laws[l].lambda);
+			struct set out;
+			dem_front_stats_t st;
+			char label[96];
+			s.check_limit = limits[k];
+			snprintf(label, sizeof label, "%s, %s, check limit %d",
+				 dem_front_form_names[form], laws[l].name, limits[k]);
+			run(&s, 10 + l, &out, &st);
+			print_message("# %s: %zu disks, density %.4f, cases %zu/%zu/%zu, failed %zu\n",
+				      label, out.n, st.density, st.cases[0], st.cases[1],
+				      st.cases[2], st.failed);
+			assert_true(out.n > 1000);
+			check_packing(&out, &s, label);
+			check_stats(&out, &s, &st);
+			/* culling leaves gaps along the sides of the closed form
+			 * (Fig. 5.6(b)); the open form fills up to the lid */
+			if (st.density < (form == DEM_FRONT_OPEN ? 0.75 : 0.68))
+				fail_msg("%s: density %g", label, st.density);
+			set_free(&out);
+		}
+}
+
+static void test_closed(void **state)
+{
+	(void)state;
+	check_form(DEM_FRONT_CLOSED);
+}
+
+static void test_open(void **state)
+{
+	(void)state;
+	check_form(DEM_FRONT_OPEN);
+}
+
+/* About 20k disks, every pair by brute force, one run per form. */
+static void test_large(void **state)
+{
+	(void)state;
+	for (int f = 0; f < 2; f++) {
+		dem_front_spec_t s = spec((dem_front_form_t)f, 200, 200, DEM_RADIUS_URD, 0.5, 2);
+		struct set out;
+		dem_front_stats_t st;
+		run(&s, 3, &out, &st);
+		assert_true(out.n > 15000 && out.n < 30000);
+		check_packing(&out, &s, dem_front_form_names[f]);
+		check_stats(&out, &s, &st);
+		set_free(&out);
+	}
+}
+
+/* Far from the origin and in an odd shape: the same guarantees (tangency
+ * computed on large coordinates; a strip barely wider than a disk). */
+static void test_hard_domains(void **state)
+{
+	(void)state;
+	const double box[][4] = {
+		{1e4, -2e4, 1e4 + 40, -2e4 + 30},       /* far away */
+		{0, 0, 200, 3},                         /* flat strip */
+		{0, 0, 2.2, 100},                       /* tall chimney */
+		{0, 0, 1.5, 1.5},                       /* about one disk */
+		{0, 0, 0.5, 0.5},                       /* smaller than any disk */
+	};
+	for (int f = 0; f < 2; f++)
+		for (size_t b = 0; b < sizeof box / sizeof box[0]; b++)
+			for (int g = 0; g <= f; g++) {
+				dem_front_spec_t s = spec((dem_front_form_t)f, 1, 1, DEM_RADIUS_URD, 0.5, 2);
+				struct set out;
+				dem_front_stats_t st;
+				char label[64];
+				s.lo[0] = box[b][0];
+				s.lo[1] = box[b][1];
+				s.hi[0] = box[b][2];
+				s.hi[1] = box[b][3];
+				s.gravity = g;
+				snprintf(label, sizeof label, "%s box %zu%s",
+					 dem_front_form_names[f], b, g ? " gravity" : "");
+				run(&s, 5, &out, &st);
+				check_packing(&out, &s, label);
+				check_stats(&out, &s, &st);
+				if (b == 4)
+					assert_int_equal(out.n, 0);
+				set_free(&out);
+			}
+}
+
+/* Fig. 5.10(a): equal disks, closed form, give the hexagonal lattice. */
+static void test_hexagonal(void **state)
+{
+	(void)state;
+	const double L = 100, r = 1, w0 = 20, w1 = 80;
+	dem_front_spec_t s = spec(DEM_FRONT_CLOSED, L, L, DEM_RADIUS_MONO, r, 1);
+	struct set out;
+	dem_front_stats_t st;
+	run(&s, 1, &out, &st);
+
+	/* a bucket grid of cell 2r for the neighbour counts and the raster */
+	int nc = (int)(L / (2 * r)) + 1;
+	int *head = malloc((size_t)nc * nc * sizeof *head), *nxt = malloc(out.n * sizeof *nxt);
+	assert_non_null(head);
+	assert_non_null(nxt);
+	for (int i = 0; i < nc * nc; i++)
+		head[i] = -1;
+	for (size_t i = 0; i < out.n; i++) {
+		int cx = (int)(out.x[i] / (2 * r)), cy = (int)(out.y[i] / (2 * r));
+		nxt[i] = head[cy * nc + cx];
+		head[cy * nc + cx] = (int)i;
+	}
+	size_t inner = 0;
+	for (size_t i = 0; i < out.n; i++) {
+		if (out.x[i] < w0 || out.x[i] > w1 || out.y[i] < w0 || out.y[i] > w1)
+			continue;
+		int cx = (int)(out.x[i] / (2 * r)), cy = (int)(out.y[i] / (2 * r)), touch = 0;
+		for (int y = cy - 1; y <= cy + 1; y++)
+			for (int x = cx - 1; x <= cx + 1; x++)
+				for (int j = head[y * nc + x]; j >= 0; j = nxt[j]) {
+					if ((size_t)j == i)
+						continue;
+					double g = gap(&out, i, (size_t)j);
+					if (fabs(g) <= TOL * r)
+						touch++;
+					else
+						assert_true(g > 0.1 * r);
+				}
+		if (touch != 6)
+			fail_msg("disk %zu at (%g, %g) touches %d disks, not 6", i, out.x[i], out.y[i], touch);
+		inner++;
+	}
+	assert_true(inner > 800);
+
+	/* covered fraction of the window [w0, w1]^2 on a raster of step r/25 */
+	long hit = 0, all = 0;
+	const double h = r / 25;
+	for (double py = w0 + h / 2; py < w1; py += h)
+		for (double px = w0 + h / 2; px < w1; px += h) {
+			int cx = (int)(px / (2 * r)), cy = (int)(py / (2 * r)), in = 0;
+			for (int y = cy - 1; y <= cy + 1 && !in; y++)
+				for (int x = cx - 1; x <= cx + 1 && !in; x++)
+					for (int j = head[y * nc + x]; j >= 0 && !in; j = nxt[j])
+						in = hypot(px - out.x[j], py - out.y[j]) <= r;
+			hit += in;
+			all++;
+		}
+	double rho = (double)hit / (double)all;
+	print_message("# hexagonal: %zu disks, %zu inner with 6 contacts, window density %.4f "
+		      "(lattice %.4f), whole domain %.4f\n",
+		      out.n, inner, rho, DEM_PI / (2 * sqrt(3.0)), st.density);
+	assert_true(rho >= 0.90);
+	assert_true(fabs(rho - DEM_PI / (2 * sqrt(3.0))) < 0.005);
+	free(head);
+	free(nxt);
+	set_free(&out);
+}
+
+/* Fig. 5.9: is disk i held up?  Its supports: the disks it touches and
+ * the side walls it touches, each at its contact point's abscissa; some
+ * two of them must lie one on each side of (or under) the centre, with
+ * the segment between them below the centre.  A disk on the floor rests
+ * on it. */
+static int supported(const struct set *s, const dem_front_spec_t *sp,
+		     const dem_pair_t *p, const size_t *first, size_t i)
+{
+	double x = s->x[i], y = s->y[i], r = s->r[i];
+	double sx[64], sy[64];
+	int ns = 0;
+
+	if (fabs(y - r - sp->lo[1]) <= TOL * r)
+		return 1;
+	if (fabs(x - r - sp->lo[0]) <= TOL * r) {
+		sx[ns] = sp->lo[0];
+		sy[ns++] = y;
+	}
+	if (fabs(x + r - sp->hi[0]) <= TOL * r) {
+		sx[ns] = sp->hi[0];
+		sy[ns++] = y;
+	}
+	for (size_t k = first[i]; k < first[i + 1] && ns < 64; k++) {
+		size_t j = p[k].j;
+		if (fabs(gap(s, i, j)) <= TOL * fmin(r, s->r[j])) {
+			sx[ns] = s->x[j];
+			sy[ns++] = s->y[j];
+		}
+	}
+	for (int a = 0; a < ns; a++)
+		for (int b = 0; b < ns; b++) {
+			if (!(sx[a] <= x + TOL * r && x <= sx[b] + TOL * r && sx[a] < sx[b]))
+				continue;
+			double t = (x - sx[a]) / (sx[b] - sx[a]);
+			if (y > sy[a] + t * (sy[b] - sy[a]))
+				return 1;
+		}
+	return 0;
+}
+
+static int by_i(const void *a, const void *b)
+{
+	const dem_pair_t *p = a, *q = b;
+	return p->i < q->i ? -1 : p->i > q->i;
+}
+
+/* Gravity (Ch. 5.2.3): open form, every kept disk is stable by Fig. 5.9. */
+static void test_gravity(void **state)
+{
+	(void)state;
+	for (size_t l = 0; l < 4; l++) {
+		dem_front_spec_t s = spec(DEM_FRONT_OPEN, 60, 45, laws[l].kind, laws[l].rmin,
+					  laws[l].lambda);
+		struct set out;
+		dem_front_stats_t st;
+		dem_pairs_t p;
+		struct {
+			dem_pair_t *p;
+			size_t n;
+		} q;
+		s.gravity = 1;
+		run(&s, 20 + l, &out, &st);
+		print_message("# gravity, %s: %zu disks, density %.4f, unstable %zu, dropped %zu\n",
+			      laws[l].name, out.n, st.density, st.unstable, st.dropped);
+		check_packing(&out, &s, "gravity");
+		check_stats(&out, &s, &st);
+		assert_true(st.density > 0.74);
+		if (laws[l].kind != DEM_RADIUS_MONO)    /* the rule did act */
+			assert_true(st.unstable > 0);
+
+		/* both orientations of every pair, grouped by first index */
+		pairs_of(&out, &p);
+		q.n = 2 * p.n;
+		q.p = malloc((q.n + 1) * sizeof *q.p);
+		assert_non_null(q.p);
+		for (size_t k = 0; k < p.n; k++) {
+			q.p[2 * k] = p.p[k];
+			q.p[2 * k + 1] = (dem_pair_t){p.p[k].j, p.p[k].i};
+		}
+		qsort(q.p, q.n, sizeof *q.p, by_i);
+		size_t *first = calloc(out.n + 1, sizeof *first);
+		assert_non_null(first);
+		for (size_t k = 0; k < q.n; k++)
+			first[q.p[k].i + 1]++;
+		for (size_t i = 0; i < out.n; i++)
+			first[i + 1] += first[i];
+		for (size_t i = 0; i < out.n; i++)
+			if (!supported(&out, &s, q.p, first, i))
+				fail_msg("gravity, %s: disk %zu at (%g, %g; %g) is not supported",
+					 laws[l].name, i, out.x[i], out.y[i], out.r[i]);
+		free(first);
+		dem_pairs_free(&p);
+		free(q.p);
+		set_free(&out);
+	}
+}
+
+/* The same seed gives the same packing, another seed another. */
+static void test_seed(void **state)
+{
+	(void)state;
+	for (int f = 0; f < 2; f++) {
+		dem_front_spec_t s = spec((dem_front_form_t)f, 40, 30, DEM_RADIUS_URD, 0.2, 5);
+		struct set a, b, c;
+		dem_front_stats_t st;
+		s.gravity = f;
+		run(&s, 99, &a, &st);
+		run(&s, 99, &b, &st);
+		run(&s, 100, &c, &st);
+		assert_int_equal(a.n, b.n);
+		assert_memory_equal(a.x, b.x, a.n * sizeof *a.x);
+		assert_memory_equal(a.y, b.y, a.n * sizeof *a.y);
+		assert_memory_equal(a.r, b.r, a.n * sizeof *a.r);
+		assert_true(a.n != c.n || memcmp(a.x, c.x, a.n * sizeof *a.x) != 0);
+		set_free(&a);
+		set_free(&b);
+		set_free(&c);
+	}
+}
+
+/* Bad specs are DEM_EINPUT with a message; emit's nonzero value stops the
+ * output and is returned. */
+static void test_errors(void **state)
+{
+	(void)state;
+	dem_front_spec_t good = spec(DEM_FRONT_OPEN, 20, 20, DEM_RADIUS_URD, 0.5, 2);
+	dem_front_spec_t bad[6];
+	for (int k = 0; k < 6; k++)
+		bad[k] = good;
+	bad[0].hi[0] = 0;                       /* empty */
+	bad[1].lo[1] = NAN;                     /* not finite */
+	bad[2].law.rmin = 0;                    /* radii */
+	bad[3].law.rmax = 0.25;                 /* rmax < rmin */
+	bad[4].form = DEM_FRONT_CLOSED;         /* gravity needs the open form */
+	bad[4].gravity = 1;
+	bad[5].check_limit = -1;
+	gsl_rng *g = dem_rng_derive(1, 0);
+	for (int k = 0; k < 6; k++) {
+		struct set out = {0};
+		dem_front_stats_t st;
+		dem_error_t e;
+		dem_error_clear(&e);
+		assert_int_equal(dem_pack_front(&bad[k], g, collect, &out, &st, &e), DEM_EINPUT);
+		assert_int_equal(e.code, DEM_EINPUT);
+		assert_true(e.msg[0] != '\0');
+		assert_int_equal(out.n, 0);
+	}
+	struct set out = {0};
+	dem_error_t e;
+	dem_error_clear(&e);
+	out.stop_after = 10;
+	out.stop_code = 42;
+	assert_int_equal(dem_pack_front(&good, g, collect, &out, NULL, &e), 42);
+	assert_int_equal(out.n, 10);
+	set_free(&out);
+	gsl_rng_free(g);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_closed),
+		cmocka_unit_test(test_open),
+		cmocka_unit_test(test_large),
+		cmocka_unit_test(test_hard_domains),
+		cmocka_unit_test(test_hexagonal),
+		cmocka_unit_test(test_gravity),
+		cmocka_unit_test(test_seed),
+		cmocka_unit_test(test_errors),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
