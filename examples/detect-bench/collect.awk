@@ -1,6 +1,7 @@
 # collect.awk - one row per cost file (OUT/runs/RUN/KEY.EXT.cost, plan.awk):
 # the set-up, parsed from the file's path, and the medians of its cost lines
-# (demdetect's `key=value` fields).  Usage: awk -f collect.awk FILE...
+# (demdetect's `key=value` fields), and the checksum of the demdetect that made
+# them.  Usage: awk -f collect.awk FILE...
 
 function median(a, n,    i, j, t)
 {
@@ -35,18 +36,20 @@ function flush(    np, p, run, name, ext, algo, cell, nk, k, asp, lo, hi, i)
 		if (det[i] < lo) lo = det[i]
 		if (det[i] > hi) hi = det[i]
 	}
-	printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%d\t%.6g\t%.6g\t%.6g\t%.0f\t%.6g\t%.6g\n",
+	printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%d\t%.6g\t%.6g\t%.6g\t%.0f\t%.6g\t%.6g\t%s\n",
 	    algo, cell, substr(k[1], 2), substr(k[2], 2), k[3], substr(k[4], 4),
 	    substr(k[5], 4), asp, ext, runs, median(det, runs), median(rd, runs),
-	    median(rss, runs), pairs, lo, hi
-	runs = 0
+	    median(rss, runs), pairs, lo, hi, binary
+	runs = 0; binary = "-"
 }
 
 BEGIN {
-	print "# algo\tcell\tdim\tn\tlaw\trho\tlam\taspect\tfmt\truns\tdetect_s\tread_s\trss_mb\tpairs\tdetect_min\tdetect_max"
+	print "# algo\tcell\tdim\tn\tlaw\trho\tlam\taspect\tfmt\truns\tdetect_s\tread_s\trss_mb\tpairs\tdetect_min\tdetect_max\tbinary"
 }
 
-FNR == 1 { flush(); file = FILENAME }
+FNR == 1 { flush(); file = FILENAME; binary = "-" }
+
+/^# binary / { binary = $3 }
 
 /: cost: / {
 	runs++

@@ -13,7 +13,9 @@ case $name in
 *.txt)    fmt=""      key=${name%.txt} ;;
 *) echo "data.sh: $file: expected a .bin, .bin.gz or .txt name" >&2; exit 2 ;;
 esac
+set -f        # split the key at "-" into the positional parameters, no globbing
 IFS=-
+# shellcheck disable=SC2086
 set -- $key
 unset IFS
 [ $# -ge 5 ] || { echo "data.sh: $key: expected d<dim>-n<N>-<law>-rho<R>-lam<L>[-a<aspect>]" >&2; exit 2; }

@@ -1,18 +1,28 @@
 #!/bin/sh
-# measure.sh DEMDETECT REPS MAXS RUN DATA - time `demdetect -c` on DATA and print
-# its cost line (the last line of its stderr), once per run.
+# measure.sh DEMDETECT REPS MAXS RUN DATA [WARMUP] - time `demdetect -c` on DATA
+# and print its cost line (the last line of its stderr), once per run.
 #
-# It runs REPS times, but stops early once the runs have taken MAXS seconds, so
-# a slow algorithm (ASDT on 1M spheres) is timed once or twice, not five times.
+# WARMUP untimed runs (default 1) come first: on this VM the first run after a
+# while pays for faulting fresh memory in and can be twice as slow.  Then REPS
+# timed runs, stopping early once they have taken MAXS seconds, so a slow
+# algorithm (ASDT on 1M spheres) is timed once or twice, not five times.
 # RUN is the algorithm, with "-cF" for cell factor F: dcell, asdt, dcell-c1.5.
 # One thread (OMP_NUM_THREADS=1): the targets are single-thread numbers.
 set -eu
-demdetect=$1 reps=$2 maxs=$3 run=$4 data=$5
+demdetect=$1 reps=$2 maxs=$3 run=$4 data=$5 warmup=${6:-1}
 algo=${run%%-c*}
 cell=
 case $run in *-c*) cell="--cell ${run#*-c}" ;; esac
 err=$(mktemp)
 trap 'rm -f "$err"' EXIT
+# which build of demdetect made these timings (the report warns on a mix)
+echo "# binary $(cksum < "$demdetect" | awk '{ print $1 }')"
+i=0
+while [ "$i" -lt "$warmup" ]; do
+	# shellcheck disable=SC2086
+	OMP_NUM_THREADS=1 "$demdetect" -q -a "$algo" $cell -c "$data" >/dev/null 2>&1 || true
+	i=$((i + 1))
+done
 i=0 spent=0
 while [ "$i" -lt "$reps" ]; do
 	# shellcheck disable=SC2086 # cell is an option and its value

@@ -6,6 +6,7 @@
 #   scale.png                          D-cell time against N, ours and the thesis's (Fig. 2.9)
 #
 # The environment gives N1M, SWEEP2D and SWEEP3D, as the Makefile exports them.
+# shellcheck disable=SC2129 # the gnuplot script is written piece by piece
 set -eu
 out=$1 png=$2
 dat=$out/plot

@@ -4,7 +4,7 @@
 # results.tsv comes from collect.awk, sizes.tsv is "file<TAB>bytes" of the data
 # sets, tables.tsv holds the thesis's numbers and drives the table layout.
 # Variables: n1m n2m n5m (our N for the thesis's 1M, 2M, 5M), sweep2 sweep3
-# factors (the cell size sweep, as in plan.awk), reps maxs, and the header
+# factors (the cell size sweep, as in plan.awk), reps maxs warmup, and the header
 # facts: date cpu ncpu mem version rev.
 
 BEGIN {
@@ -25,6 +25,7 @@ FILENAME ~ /results\.tsv$/ && !/^#/ {
 	idx[k] = nres
 	n[nres] = $4; runs[nres] = $10; det[nres] = $11; rd[nres] = $12
 	rss[nres] = $13; pairs[nres] = $14; dlo[nres] = $15; dhi[nres] = $16
+	if (!($17 in builds)) { builds[$17] = 1; nbuild++ }
 	next
 }
 
@@ -82,7 +83,17 @@ function setup(t, r,    s)
 
 function aspect(a) { gsub(/x/, ":", a); return a }
 
-function median_note(i) { return runs[i] == 1 ? " (1 run)" : "" }
+# "(1 run)" for a single timing; a dagger when the runs spread by more than 30 %.
+function median_note(i)
+{
+	if (runs[i] == 1)
+		return " (1 run)"
+	if (dhi[i] - dlo[i] > 0.3 * det[i]) {
+		noisy++
+		return " †"
+	}
+	return ""
+}
 
 # ---- report --------------------------------------------------------------
 
@@ -96,7 +107,9 @@ END {
 	print "- **Thesis:** AMD Athlon 1.4 GHz, 512 MB, CPU seconds of detection (Han 2004, Tables 2.1-2.9)."
 	print "- **Ours:** `detect_s` of demdetect's cost line: wall-clock seconds of detection alone"
 	print "  (reading the stream excluded, reported under I/O), one thread, the median of up to"
-	print "  " reps " runs (fewer once a set-up has taken " maxs " s; see `out/results.tsv` for min and max)."
+	print "  " reps " runs after " warmup " untimed warm-up run" (warmup == 1 ? "" : "s") " (fewer once a set-up has taken " maxs " s)."
+	print "  † marks a median whose runs spread by more than 30 % (min and max in `out/results.tsv`):"
+	print "  the machine was busy; `make retime` times again."
 	print "  Objects: `dempack random --seed 1`, read from binary streams; default cell size (3x the"
 	print "  mean object size in 2D, 5x in 3D) except in the sweep."
 	print "- **Object counts:** the thesis's 1M, 2M, 5M are run here with N = " \
@@ -104,6 +117,11 @@ END {
 	print "- **ns/object** = detect_s / N x 1e9; **ours/thesis** = ratio of times per object (the ratio"
 	print "  of times when N is the thesis's)."
 	print ""
+	if (nbuild > 1) {
+		print "**Warning:** these timings come from " nbuild " different builds of demdetect (it was"
+		print "rebuilt during the run); `make retime` gives a consistent set."
+		print ""
+	}
 	targets()
 	for (t = 1; t <= ntab; t++)
 		table(tab[t])
@@ -113,7 +131,7 @@ END {
 	io()
 }
 
-function targets(    i, j, i1, i2, a, r, ok, s, worst, d, rh, lm, lst, all, t, nn)
+function targets(    i, j, a, r, s, ws, worst, d, rh, lm, lst, t, lim)
 {
 	print "## Targets"
 	print ""
@@ -139,14 +157,13 @@ function targets(    i, j, i1, i2, a, r, ok, s, worst, d, rh, lm, lst, all, t, n
 	}
 	# ASDT against D-cell: Table 2.1 (disks, lambda) and Table 2.2 (spheres, rho)
 	for (d = 2; d <= 3; d++) {
-		lst = ""; worst = 0; all = 1
-		nn = d == 2 ? 3 : 3
+		lst = ""; worst = 0
 		for (a = 1; a <= 3; a++) {
 			rh = d == 2 ? "0.6" : a == 1 ? "0.1" : a == 2 ? "0.3" : "0.6"
 			lm = d == 2 ? (a == 1 ? "1" : a == 2 ? "10" : "100") : "1"
 			i = res("asdt", "def", d, n1m, "urd", rh, lm, "-", "bin")
 			j = dc(d, n1m, rh, lm)
-			if (!i || !j) { all = 0; continue }
+			if (!i || !j) continue
 			r = det[i] / det[j]
 			if (r > worst) worst = r
 			lst = lst (lst == "" ? "" : ", ") sprintf("%.1fx", r) " (" (d == 2 ? "λ " lm : "ρ " rh) ")"
@@ -184,7 +201,7 @@ function targets(    i, j, i1, i2, a, r, ok, s, worst, d, rh, lm, lst, all, t, n
 	print ""
 }
 
-function table(t,    r, s, i, thesis, nn, any, d, k, first, badpairs, pk)
+function table(t,    r, s, i, thesis, nn, any, badpairs, pk, tt)
 {
 	tt = title[t]
 	gsub(/rho /, "ρ ", tt); gsub(/lambda/, "λ", tt)
@@ -226,6 +243,11 @@ function table(t,    r, s, i, thesis, nn, any, d, k, first, badpairs, pk)
 	for (pk in seenpairs)
 		delete seenpairs[pk]
 	print ""
+	if (noisy) {
+		print "† the runs spread by more than 30 %: treat this time with care."
+		print ""
+		noisy = 0
+	}
 	if (badpairs != "") {
 		print "**Warning:** the algorithms disagree on the number of pairs:" badpairs "."
 		print ""
@@ -234,7 +256,7 @@ function table(t,    r, s, i, thesis, nn, any, d, k, first, badpairs, pk)
 
 # The optimal cell factor per sweep case; "flat" lists the factors within 10 %
 # of the best time (the thesis: "a relatively large optimal cell size range").
-function sweep(    d, nc, c, i, rl, nf, f, j, k, best, bf, flat, def, di)
+function sweep(    d, nc, c, i, rl, nf, f, j, k, best, bf, flat, di)
 {
 	print "## Cell size sweep (Figs. 2.10-2.12)"
 	print ""
@@ -273,7 +295,7 @@ function sweep(    d, nc, c, i, rl, nf, f, j, k, best, bf, flat, def, di)
 	print ""
 }
 
-function scale(    d, rh, i, j, nr, line)
+function scale(    d, rh, rr, i, j, m, nn, line, first, last)
 {
 	print "## Scale (Fig. 2.9)"
 	print ""
@@ -325,7 +347,7 @@ function thesis_growth(d, rh,    t, r, s, lo, hi, hn)
 	return lo == "" || hn == "1m" ? "—" : sprintf("%.2f (%s)", hi / lo, toupper(hn))
 }
 
-function memory(    i, b, d, rh, lm)
+function memory(    i, a, b, d, m, nn, lm)
 {
 	print "## Memory"
 	print ""
@@ -358,7 +380,7 @@ function memory(    i, b, d, rh, lm)
 	print ""
 }
 
-function io(    k, i, ext, f, lbl, x, d)
+function io(    i, ext, f, lbl, x, d)
 {
 	print "## I/O"
 	print ""

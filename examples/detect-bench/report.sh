@@ -13,7 +13,7 @@ cpu=$(awk -F': *' '/^model name/ { print $2; exit }' /proc/cpuinfo 2>/dev/null)
 mem=$(awk '/^MemTotal/ { printf "%.0f GB RAM", $2 / 1048576 }' /proc/meminfo 2>/dev/null)
 exec awk -f report.awk \
 	-v n1m="$N1M" -v n2m="$N2M" -v n5m="$N5M" -v factors="$FACTORS" \
-	-v sweep2="$SWEEP2D" -v sweep3="$SWEEP3D" -v reps="$REPS" -v maxs="$MAXS" \
+	-v sweep2="$SWEEP2D" -v sweep3="$SWEEP3D" -v reps="$REPS" -v maxs="$MAXS" -v warmup="$WARMUP" \
 	-v date="$(date -u '+%Y-%m-%d %H:%M UTC')" -v cpu="${cpu:-unknown CPU}" \
 	-v ncpu="$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo '?')" -v mem="${mem:-unknown RAM}" \
 	-v version="$("$demdetect" --version 2>/dev/null | head -n 1)" \
