@@ -13,17 +13,19 @@
  * the cell count.  Two sweeps make the tests of Fig. 2.8:
  *
  * - The near sweep, for the usual sets, where no box crosses more than one
- *   cell face per axis.  The boxes that migrate into a cell T then come only
- *   from the cells T - dA, dA a 0/1 vector, and the tests in T are those
- *   between the boxes of T - dA and T - dB with dA & dB = 0 (each box
- *   reaching T along the axes of its vector).  Walking the non-empty cells A
- *   in order with one cursor per neighbour offset B - A = dA - dB reaches
+ *   cell face along any axis.  The boxes that migrate into a cell T then
+ *   come only from the cells T - dA, dA a 0/1 vector, and the tests in T are
+ *   those between the boxes of T - dA and of T - dB with dA & dB = 0, each
+ *   box reaching T along the axes of its vector.  Walking the non-empty
+ *   cells A in order, with one cursor per row of neighbour cells, reaches
  *   every such pair of source cells in place in the sorted array: the
- *   migration lists are never built.
+ *   migration lists are never built (dcell_impl.h, sweep_near).
  * - The list sweep of Box 2.1 for the other sets: slab, row and cell lists
  *   with the migrants merged in, as in the thesis.
  *
- * The instantiations for 1, 2 and 3 dimensions come from dcell_impl.h.
+ * The buffers come from a workspace (dem_detect_ws_t), so a time loop that
+ * detects every step reuses them.  The instantiations for 1, 2 and 3
+ * dimensions come from dcell_impl.h.
  */
 #include "detect/detect.h"
 
@@ -32,29 +34,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-#ifdef DCELL_TIMING
-#include <stdio.h>
-#include <time.h>
-static double tt_[8];
-static double tt_now(void){struct timespec t;clock_gettime(CLOCK_MONOTONIC,&t);return t.tv_sec+1e-9*t.tv_nsec;}
-#ifdef DCELL_COUNT
-static size_t dc_prod, dc_rows;
-#define DCP fprintf(stderr, "prod/obj %.2f rows/obj %.2f ", (double)dc_prod/n, (double)dc_rows/n), dc_prod = dc_rows = 0
-#else
-#define DCP (void)0
-#endif
-#define TT(k) do { tt_[k] = tt_now(); if (k == 5) DCP; if (k == 5) fprintf(stderr, "map %.1f sort %.1f gather %.1f cells %.1f sweep %.1f\n", (tt_[1]-tt_[0])*1e9/n, (tt_[2]-tt_[1])*1e9/n, (tt_[3]-tt_[2])*1e9/n, (tt_[4]-tt_[3])*1e9/n, (tt_[5]-tt_[4])*1e9/n); } while (0)
-#else
-#define TT(k) ((void)0)
-#endif
-
 /* Workspace slots (dem_detect_ws_get). */
 enum {
-	WS_RAW,         /* boxes in input order, then the cell table (near
-			 * sweep) or the cell coordinates (list sweep) */
-	WS_ENT,         /* boxes in cell order */
+	WS_RAW,         /* boxes in input order, then the cells' group starts
+			 * (near sweep) or cell coordinates (list sweep) */
+	WS_ENT,         /* boxes in cell order; before, the radix sort's
+			 * second buffer */
 	WS_KEY,         /* sort keys */
-	WS_TMP,         /* the other buffer of the radix sort */
+	WS_CELL,        /* the indices of the non-empty cells (near sweep) */
 	WS_LIST         /* the lists of the list sweep */
 };
 
@@ -66,7 +53,7 @@ typedef struct grid {
 	double org[DEM_MAXDIM], inv[DEM_MAXDIM];
 	double top[DEM_MAXDIM];         /* n - 1, the last cell */
 	uint32_t n[DEM_MAXDIM];
-	int kb;                         /* bits of a sort key, cell << dim | group */
+	int kb;                         /* bits of a sort key: cell, group */
 } grid_t;
 
 static inline uint32_t cell_of(const grid_t *g, int d, double x)
@@ -75,6 +62,27 @@ static inline uint32_t cell_of(const grid_t *g, int d, double x)
 	t = t > 0 ? t : 0;              /* also maps NaN to 0 */
 	t = t < g->top[d] ? t : g->top[d];
 	return (uint32_t)t;
+}
+
+/* The smallest and largest of x[0 .. n - 1] (NaNs ignored); two chains of
+ * each, so the comparisons do not all wait on one another. */
+static void span_of(const double *x, size_t n, double *lo, double *hi)
+{
+	double l0 = HUGE_VAL, l1 = HUGE_VAL, h0 = -HUGE_VAL, h1 = -HUGE_VAL;
+	size_t i = 0;
+
+	for (; i + 2 <= n; i += 2) {
+		l0 = x[i] < l0 ? x[i] : l0;
+		h0 = x[i] > h0 ? x[i] : h0;
+		l1 = x[i + 1] < l1 ? x[i + 1] : l1;
+		h1 = x[i + 1] > h1 ? x[i + 1] : h1;
+	}
+	for (; i < n; i++) {
+		l0 = x[i] < l0 ? x[i] : l0;
+		h0 = x[i] > h0 ? x[i] : h0;
+	}
+	*lo = l0 < l1 ? l0 : l1;
+	*hi = h0 > h1 ? h0 : h1;
 }
 
 /* Per-axis cell counts are capped so the linear index fits 60 bits and the
@@ -89,12 +97,8 @@ static void grid_setup(grid_t *g, const dem_boxes_t *b, const double *cell,
 	if (cap > (double)(1u << 20))
 		cap = (double)(1u << 20);
 	for (int d = 0; d < b->dim; d++) {
-		const double *x = b->lo[d];
-		double lo = HUGE_VAL, hi = -HUGE_VAL;
-		for (size_t i = 0; i < b->n; i++) {
-			lo = x[i] < lo ? x[i] : lo;
-			hi = x[i] > hi ? x[i] : hi;
-		}
+		double lo, hi;
+		span_of(b->lo[d], b->n, &lo, &hi);
 		double span = hi - lo, c = cell[d];
 		double n = span > 0 && c > 0 ? floor(span / c) + 1 : 1;
 		if (n > cap)
@@ -127,15 +131,22 @@ typedef struct keyed {
 	uint32_t idx;
 } keyed_t;
 
-/* LSD radix sort of packed keys by bits 32 .. 32 + kb - 1, in as few passes
- * of at most 11 bits as cover them, the counts of every pass from one read.
- * Returns the buffer that holds the result (a or tmp). */
+/* The passes of the radix sorts for kb key bits: as few as cover them
+ * with digits of at most 11 bits (2048 counts, which stay in L1). */
+static int sort_passes(int kb)
+{
+	return (kb + 10) / 11;
+}
+
+/* LSD radix sort of packed keys by bits 32 .. 32 + kb - 1 (kb <= 32), in
+ * sort_passes(kb) passes of equal digits, the counts of every pass from one
+ * read.  Returns the buffer that holds the result (a or tmp). */
 static uint64_t *sort_packed(uint64_t *a, uint64_t *tmp, size_t n, int kb)
 {
 	enum { MAXR = 11, MAXP = 3 };
 	static_assert(MAXR * MAXP >= 32, "three passes cover 32 bits");
 	uint32_t count[MAXP][1 << MAXR];
-	int passes = (kb + MAXR - 1) / MAXR;
+	int passes = sort_passes(kb);
 	if (passes == 0)
 		return a;
 	int r = (kb + passes - 1) / passes;
@@ -168,7 +179,8 @@ static uint64_t *sort_packed(uint64_t *a, uint64_t *tmp, size_t n, int kb)
 }
 
 /* LSD radix sort of keyed records by key (bits of key < 2^kb), stable,
- * 11 bits a pass; returns the buffer that holds the result. */
+ * 11 bits a pass (sort_passes(kb) passes); returns the buffer that holds
+ * the result (a or tmp). */
 static keyed_t *sort_wide(keyed_t *a, keyed_t *tmp, size_t n, int kb)
 {
 	enum { R = 11, B = 1 << R };
@@ -264,34 +276,44 @@ static void runs_setup(runs_t *r, const unsigned char *group_f, int ng)
  * where v = -1 (db); vx adds x to one of them. */
 typedef struct nrow {
 	uint64_t delta;         /* linear index of A + (0, vy, vz) minus A's */
-	unsigned da, db;        /* the y and z bits */
+	int vy, vz;
+	unsigned da, db;        /* their y and z bits */
 } nrow_t;
 
 #define NROW_MAX 4
 
-/* The rows of neighbours for a grid of dim axes (none in 1D).  A row along
- * an axis with a single cell is left out: no box leaves that cell.  Near
- * the grid's faces a neighbour index may wrap into another row or slab, but
- * then one side would have to leave a cell of the last column (row, slab)
- * along the wrapped axis, which no box does, so the wrap yields no test. */
+/* The rows of neighbours for a grid of dim axes: (0, 1) in 2D; (1, 0),
+ * (-1, 1), (0, 1), (1, 1) in 3D; none in 1D.  The index difference is taken
+ * mod 2^64; it is positive for every row that is inside the grid. */
 static int nrow_setup(const grid_t *g, int dim, nrow_t *t)
 {
 	int k = 0;
 
-	for (int vz = dim > 2 ? -1 : 0; vz <= (dim > 2); vz++)
+	for (int vz = 0; vz <= (dim > 2); vz++)
 		for (int vy = -1; vy <= 1 && dim > 1; vy++) {
-			if (!(vz == 1 || (vz == 0 && vy == 1)))
+			if (!(vz == 1 || vy == 1))
 				continue;       /* last nonzero must be +1 */
-			if ((vy && g->n[1] < 2) || (vz && g->n[2] < 2))
-				continue;
 			uint64_t delta = (uint64_t)(int64_t)vy * g->n[0];
 			if (vz)
-				delta += (uint64_t)g->n[0] * g->n[1];   /* mod 2^64 */
-			t[k++] = (nrow_t){delta, (vy > 0) << 1 | (vz > 0) << 2,
+				delta += (uint64_t)g->n[0] * g->n[1];
+			unsigned da = (unsigned)(vy > 0) << 1 | (unsigned)vz << 2;
+			t[k++] = (nrow_t){delta, vy, vz, da,
 					  (unsigned)(vy < 0) << 1};
 		}
 	return k;
 }
+
+/* Where a row of neighbours' boxes begin for the boxes of A (s), and where
+ * they end for a box of A that does not (e0) or does (e1) reach the next
+ * cell along x. */
+typedef struct span {
+	uint32_t s, e0, e1;
+	const nrow_t *row;
+} span_t;
+
+/* Where the cells of a row of tests lie from A's along an axis (see
+ * axis_ok in dcell_impl.h). */
+enum { AX_ANY, AX_ABOVE, AX_BELOW };
 
 /* An item of a slab, row or cell list of the list sweep: a box (index into
  * the sorted box array) and its migrated bits. */

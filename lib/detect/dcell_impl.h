@@ -6,58 +6,73 @@
 #define ENT CAT(ent, DIM)
 #define CH CAT(ch, DIM)
 #define CTX CAT(ctx, DIM)
-#define CELL CAT(cell, DIM)
+#define RAW CAT(raw, DIM)
+#define CELLS CAT(cells, DIM)
 #define FN(name) CAT(name, DIM)
 
 /* A box in cell order, all the tests need in one place. */
 typedef struct ENT {
 	double lo[DIM], hi[DIM];
 	uint32_t id;            /* index in the caller's box set */
-	uint32_t f;             /* bit d: the box reaches past its cell along d */
+	uint32_t f;             /* bit d: it reaches past its cell along d */
 } ENT;
 
 /* Within a cell the boxes are sorted into groups by their migration bits
- * f, in this order (group -> f): the boxes that reach the next cell along x,
- * along y, or along both are then one run each, the inner loop of the near
- * sweep's tests; any other set is at most three runs.  In 2D and 1D it is
- * the same order without the groups that have a z bit. */
+ * f, read as a number with x as the most significant bit: the boxes that
+ * reach the next cell along x, and those that reach it along x and y, are
+ * then a suffix of the cell (see sweep_near).  group_f: group -> f. */
 #define NG (1 << DIM)
 #if DIM == 3
-static const unsigned char FN(group_f)[NG] = {0, 4, 1, 5, 7, 3, 6, 2};
-static const unsigned char FN(group_of)[NG] = {0, 2, 7, 5, 1, 3, 6, 4};
+static const unsigned char FN(group_f)[NG] = {0, 4, 2, 6, 1, 5, 3, 7};
 #elif DIM == 2
-static const unsigned char FN(group_f)[NG] = {0, 1, 3, 2};
-static const unsigned char FN(group_of)[NG] = {0, 1, 3, 2};
+static const unsigned char FN(group_f)[NG] = {0, 2, 1, 3};
 #else
 static const unsigned char FN(group_f)[NG] = {0, 1};
-static const unsigned char FN(group_of)[NG] = {0, 1};
 #endif
+#define GROUP_OF(f) FN(group_f)[f]      /* the order is its own inverse */
+
+/* A box as the mapping pass leaves it, in input order. */
+typedef struct RAW {
+	double lo[DIM], hi[DIM];
+} RAW;
+
+/* One axis of a box's mapping: its coordinates, its cell in the key, its
+ * migration bit, and whether it crosses more than one cell face. */
+static inline uint64_t FN(map_axis)(const dem_boxes_t *b, const grid_t *g,
+				    int d, size_t i, RAW *r, uint64_t key,
+				    uint32_t *f, uint32_t *far)
+{
+	double lo = b->lo[d][i], hi = b->hi[d][i];
+	uint32_t c = cell_of(g, d, lo), h = cell_of(g, d, hi);
+
+	r->lo[d] = lo;
+	r->hi[d] = hi;
+	*f |= (uint32_t)(h != c) << d;
+	*far |= h - c > 1;
+	return key * g->n[d] + c;
+}
 
 /* Map each box to its cell (Box 2.1) in one sequential pass over the
- * caller's arrays: the box as an ENT, in input order, and its sort key.
- * Returns 1 when no box crosses more than one cell face along any axis (the
- * near sweep applies), else 0. */
-static int FN(map)(const dem_boxes_t *b, const grid_t *g, ENT *raw,
+ * caller's arrays: the box's coordinates side by side, and its sort key,
+ * packed (pk) or not (wk).  Returns 1 when no box crosses more than one cell
+ * face along any axis (the near sweep applies), else 0. */
+static int FN(map)(const dem_boxes_t *b, const grid_t *g, RAW *raw,
 		   uint64_t *pk, keyed_t *wk)
 {
 	uint32_t far = 0;
 
 	for (size_t i = 0; i < b->n; i++) {
-		ENT *r = &raw[i];
 		uint64_t key = 0;
 		uint32_t f = 0;
-		for (int d = DIM - 1; d >= 0; d--) {
-			double lo = b->lo[d][i], hi = b->hi[d][i];
-			uint32_t c = cell_of(g, d, lo), h = cell_of(g, d, hi);
-			r->lo[d] = lo;
-			r->hi[d] = hi;
-			f |= (uint32_t)(h != c) << d;
-			far |= h - c > 1;
-			key = key * g->n[d] + c;
-		}
-		r->id = (uint32_t)i;
-		r->f = f;
-		uint64_t sk = key << DIM | FN(group_of)[f];
+		/* the axes written out, z (slowest) first */
+#if DIM > 2
+		key = FN(map_axis)(b, g, 2, i, &raw[i], key, &f, &far);
+#endif
+#if DIM > 1
+		key = FN(map_axis)(b, g, 1, i, &raw[i], key, &f, &far);
+#endif
+		key = FN(map_axis)(b, g, 0, i, &raw[i], key, &f, &far);
+		uint64_t sk = key << DIM | GROUP_OF(f);
 		if (pk)
 			pk[i] = sk << 32 | i;
 		else
@@ -66,157 +81,256 @@ static int FN(map)(const dem_boxes_t *b, const grid_t *g, ENT *raw,
 	return !far;
 }
 
-/* A non-empty cell of the near sweep: its linear index and where the boxes
- * of each group begin in the sorted array; the last group ends where the
- * next cell begins.  The table ends with a sentinel (key UINT64_MAX). */
-typedef struct CELL {
-	uint64_t key;
-	uint32_t s[NG];
-} CELL;
-
-/* One pass over the sorted keys; returns the number of non-empty cells. */
-static size_t FN(build_cells)(const sorted_t *s, size_t n, CELL *cl)
+/* Fetch the boxes in cell order; the migration bits come back from the
+ * group in the sort key. */
+static void FN(gather)(const RAW *raw, const sorted_t *s, size_t n, ENT *ent)
 {
-	size_t nc = 0;
-	uint64_t cur = UINT64_MAX;
-	unsigned fill = NG - 1; /* s[0 .. fill] of the last cell are set */
+	for (size_t k = 0; k < n; k++) {
+		uint32_t i = sorted_idx(s, k);
+		ENT *r = &ent[k];
+		for (int d = 0; d < DIM; d++) {
+			r->lo[d] = raw[i].lo[d];
+			r->hi[d] = raw[i].hi[d];
+		}
+		r->id = i;
+		r->f = FN(group_f)[sorted_key(s, k) & (NG - 1)];
+	}
+}
+
+/* The non-empty cells of the near sweep: key[j] is the linear index of
+ * cell j, s[j * NG + g] where its boxes of group g begin in the sorted
+ * array (a group ends where the next begins, the last where cell j + 1
+ * begins).  The list ends with a sentinel cell, key UINT64_MAX, at n. */
+typedef struct CELLS {
+	const uint64_t *key;
+	const uint32_t *s;
+} CELLS;
+
+/* The slots s[] needed for n boxes. */
+#define CELL_SLOTS(n) (((n) + 3) * NG)
+
+/* Build the cell list from the sorted keys; returns the number of
+ * non-empty cells.  Branch-free: box k, in slot j * NG + g (cell j, group
+ * g), writes k into the 2 NG slots after the previous box's slot; that
+ * covers every slot up to its own (no two consecutive boxes are further
+ * apart), and the next box overwrites those beyond it.  So each slot ends
+ * up holding the first box at or after it. */
+static size_t FN(build_cells)(const sorted_t *st, size_t n, uint64_t *key,
+			      uint32_t *s)
+{
+	size_t j = (size_t)-1, p = (size_t)-1;  /* wrap to 0 below */
+	uint64_t prev = UINT64_MAX;
 
 	for (size_t k = 0; k < n; k++) {
-		uint64_t sk = sorted_key(s, k);
-		unsigned g = (unsigned)(sk & (NG - 1));
-		if (sk >> DIM != cur) {
-			while (fill < NG - 1)
-				cl[nc - 1].s[++fill] = (uint32_t)k;
-			cur = sk >> DIM;
-			cl[nc].key = cur;
-			cl[nc++].s[0] = (uint32_t)k;
-			fill = 0;
-		}
-		while (fill < g)
-			cl[nc - 1].s[++fill] = (uint32_t)k;
+		uint64_t sk = sorted_key(st, k), c = sk >> DIM;
+		j += c != prev;
+		prev = c;
+		key[j] = c;
+		for (size_t t = 1; t <= 2 * NG; t++)
+			s[p + t] = (uint32_t)k;
+		p = j * NG + (sk & (NG - 1));
 	}
-	while (fill < NG - 1)
-		cl[nc - 1].s[++fill] = (uint32_t)n;
-	cl[nc].key = UINT64_MAX;
-	for (int g = 0; g < NG; g++)
-		cl[nc].s[g] = (uint32_t)n;
+	size_t nc = j + 1;
+	for (size_t t = p + 1; t < (nc + 1) * NG; t++)
+		s[t] = (uint32_t)n;
+	key[nc] = UINT64_MAX;
 	return nc;
 }
 
-/* The overlap test of closed boxes p and q, branch-free: along every axis
- * the larger lower bound is not above the smaller upper bound.  The axes
- * are written out: the compiler does not unroll a loop over them. */
-#define AXIS_OK(d) ((p->lo[d] > q->lo[d] ? p->lo[d] : q->lo[d]) <= \
-		    (p->hi[d] < q->hi[d] ? p->hi[d] : q->hi[d]))
-static inline int FN(overlap)(const ENT *p, const ENT *q)
+/* The overlap test of closed boxes p and q along axis d, branch-free.  How
+ * depends on where the cell of q lies from that of p along d: when beyond
+ * it (AX_ABOVE), lo(q) > lo(p) (cell_of is monotone), so the boxes overlap
+ * along d just when lo(q) <= hi(p); when before it (AX_BELOW), just when
+ * lo(p) <= hi(q); else (AX_ANY) when the larger lower bound is not above the
+ * smaller upper bound. */
+static inline int FN(axis_ok)(const ENT *p, const ENT *q, int d, int where)
 {
+	if (where == AX_ABOVE)
+		return q->lo[d] <= p->hi[d];
+	if (where == AX_BELOW)
+		return p->lo[d] <= q->hi[d];
+	return (p->lo[d] > q->lo[d] ? p->lo[d] : q->lo[d]) <=
+	       (p->hi[d] < q->hi[d] ? p->hi[d] : q->hi[d]);
+}
+
+/* The overlap test of closed boxes p and q, q's cell lying along y and z as
+ * wy and wz say.  The axes are written out: the compiler does not unroll a
+ * loop over them. */
+static inline int FN(overlap)(const ENT *p, const ENT *q, int wy, int wz)
+{
+	(void)wy;
+	(void)wz;
 #if DIM == 1
-	return AXIS_OK(0);
+	return FN(axis_ok)(p, q, 0, AX_ANY);
 #elif DIM == 2
-	return AXIS_OK(0) & AXIS_OK(1);
+	return FN(axis_ok)(p, q, 0, AX_ANY) & FN(axis_ok)(p, q, 1, wy);
 #else
-	return AXIS_OK(0) & AXIS_OK(1) & AXIS_OK(2);
+	return FN(axis_ok)(p, q, 0, AX_ANY) & FN(axis_ok)(p, q, 1, wy) &
+	       FN(axis_ok)(p, q, 2, wz);
 #endif
 }
-#undef AXIS_OK
 
-/* Products of more tests than this make room row by row, so room stays
- * bounded by a row whatever the cell holds. */
+/* Room for all the tests of a cell is made at once, unless they are more
+ * than this: then row by row, so room stays bounded by a row whatever a
+ * cell holds (a crowded cell of boxes that mostly miss one another). */
 #define ROOM_MAX 65536
 
-/* Test every box of the runs ra (groups of cell A, as[] its group starts)
- * against the boxes j0 .. j1 - 1; tri: against the boxes after it only
- * (the cell with itself, j1 its end).  The pair is always written and kept
- * only when the boxes overlap, so the test itself is branch-free.  Returns
- * the number of tests. */
-static size_t FN(product)(const ENT *e, const uint32_t *as, const runs_t *ra,
-			  size_t j0, size_t j1, int tri, dem_pairs_t *out)
+/* Test box p against the boxes j .. j1 - 1, whose cells lie along y and z
+ * as wy and wz say.  The pair is always written and kept only when the
+ * boxes overlap, so the test is branch-free. */
+static inline dem_pair_t *FN(row)(const ENT *e, const ENT *p, size_t j,
+				   size_t j1, dem_pair_t *w, int wy, int wz)
 {
-	size_t ni = 0, total;
-
-	for (int r = 0; r < ra->n; r++)
-		ni += as[ra->e[r]] - as[ra->b[r]];
-	total = tri ? ni * (ni - 1) / 2 : ni * (j1 - j0);
-	if (total == 0)
-		return 0;
-#ifdef DCELL_COUNT
-	dc_prod++;
-	dc_rows += ni;
-#endif
-	int chunked = total > ROOM_MAX;
-	if (!chunked && !room(out, total))
-		return 0;
-	dem_pair_t *w = out->p + out->n;
-	for (int r = 0; r < ra->n; r++)
-		for (size_t i = as[ra->b[r]]; i < as[ra->e[r]]; i++) {
-			const ENT *p = &e[i];
-			size_t j = tri ? i + 1 : j0;
-			if (chunked) {
-				out->n = (size_t)(w - out->p);
-				if (!room(out, j1 - j))
-					return 0;
-				w = out->p + out->n;
-			}
-			for (; j < j1; j++) {
-				const ENT *q = &e[j];
-				*w = (dem_pair_t){p->id, q->id};
-				w += FN(overlap)(p, q);
-			}
-		}
-	out->n = (size_t)(w - out->p);
-	return total;
+	for (; j < j1; j++) {
+		const ENT *q = &e[j];
+		*w = (dem_pair_t){p->id, q->id};
+		w += FN(overlap)(p, q, wy, wz);
+	}
+	return w;
 }
 
-/* The near sweep (see dcell.c): every non-empty cell A in order, with
- * 1. the boxes of A among themselves (type 00 against 00 in A);
- * 2. the next cell along x, B = A + (1, 0, 0): A's boxes of type 01 in the
- *    owner cell B against B's 00;
- * 3. the rows of neighbours (nrow_t), each found by its cursor.
- * In the owner cell T the boxes of A are of type da, those of B of type db,
- * da & db = 0: Fig. 2.8's 00 against 01, 10 and 11 when one of them is 0,
- * and 01 against 10 otherwise (T itself may be empty then). */
-static size_t FN(sweep_near)(const ENT *e, const CELL *cl, size_t nc,
+/* The rows of the boxes of A in the runs r (as[]: A's group starts) against
+ * the span t of a row of neighbours lying along y and z as wy and wz say,
+ * writing at w (room made already, or row by row when chunked); adds the
+ * tests to *checks.  Returns where the next pair goes, NULL without
+ * memory. */
+static inline dem_pair_t *FN(rows)(const ENT *e, const uint32_t *as,
+				    const runs_t *r, const span_t *t,
+				    dem_pair_t *w, int chunked,
+				    dem_pairs_t *out, size_t *checks,
+				    int wy, int wz)
+{
+	for (int q = 0; q < r->n; q++)
+		for (uint32_t i = as[r->b[q]]; i < as[r->e[q]]; i++) {
+			uint32_t end = e[i].f & 1 ? t->e1 : t->e0;
+			if (chunked) {
+				out->n = (size_t)(w - out->p);
+				if (!room(out, end - t->s))
+					return NULL;
+				w = out->p + out->n;
+			}
+			*checks += end - t->s;
+			w = FN(row)(e, &e[i], t->s, end, w, wy, wz);
+		}
+	return w;
+}
+
+/* The near sweep (see dcell.c).  For every non-empty cell A in order, the
+ * tests of a box of A are at most one row of boxes per row of neighbour
+ * cells:
+ * 1. the boxes after it in A (type 00 against 00 in A) and, when it reaches
+ *    the next cell B = A + (1, 0, 0), all of B (its 01 against B's 00);
+ * 2. per row of neighbours A + (vx, vy, vz), vx = -1 .. 1 (nrow_t, found by
+ *    its cursor), when the box reaches the row along y and z: the boxes of
+ *    A + (-1, vy, vz) that reach it along x (and y if vy = -1), a suffix of
+ *    that cell, then all of A + (0, vy, vz) and, when the box reaches the
+ *    next cell along x, all of A + (1, vy, vz).
+ * These are the pairs of types da and db (da & db = 0) of the owner cell T
+ * of Fig. 2.8: 00 against 01, 10 and 11 when one of them is 0, 01 against
+ * 10 otherwise (T itself may be empty then).  Taking the last two cells of
+ * a row whole lets the row run on unbroken; their boxes that do not reach
+ * T are tested in vain, as they cannot overlap the box.  Every pair of
+ * neighbour cells is met once, from the one with the smaller index, and
+ * every pair of boxes in it once, so no pair is reported twice. */
+static size_t FN(sweep_near)(const ENT *e, const CELLS *cl, size_t nc,
 			     const grid_t *g, dem_pairs_t *out)
 {
 	runs_t runs[NG];
 	nrow_t rows[NROW_MAX];
+	span_t sp[NROW_MAX];
 	size_t cur[NROW_MAX] = {0}, checks = 0;
 	int nrow = nrow_setup(g, DIM, rows);
-	int wide = g->n[0] > 1;         /* neighbours along x exist */
 
 	runs_setup(runs, FN(group_f), NG);
-	for (size_t a = 0; a < nc && !out->nomem; a++) {
-		const CELL *A = &cl[a];
-		uint32_t as[NG + 1], bs[NG + 1];
-		for (int k = 0; k < NG; k++)
-			as[k] = A->s[k];
-		as[NG] = A[1].s[0];
-		checks += FN(product)(e, as, &runs[0], as[0], as[NG], 1, out);
-		if (wide && A[1].key == A->key + 1)
-			checks += FN(product)(e, as, &runs[1], as[NG], A[2].s[0],
-					      0, out);
+	for (size_t a = 0; a < nc; a++) {
+		uint64_t akey = cl->key[a];
+		const uint32_t *as = &cl->s[a * NG];    /* as[NG]: A's end */
+		/* A's place in the grid: which neighbours exist */
+		uint64_t cx = akey % g->n[0], cyz = akey / g->n[0];
+		uint64_t cy = DIM > 1 ? cyz % g->n[1] : 0;
+		uint64_t cz = DIM > 2 ? cyz / g->n[1] : 0;
+		int xlo = cx > 0, xhi = cx + 1 < g->n[0];
+		/* 1: the cell itself and the next one along x, which ends at
+		 * xend (A's own end when there is none) */
+		uint32_t xend = xhi && cl->key[a + 1] == akey + 1 ?
+				cl->s[(a + 2) * NG] : as[NG];
+		size_t total = (size_t)(as[NG] - as[0]) * (xend - as[0]);
+		/* 2: the rows of neighbours inside the grid */
+		int ns = 0;
 		for (int k = 0; k < nrow; k++) {
-			/* the row's cells A + delta + vx, vx = -1 .. 1 */
-			uint64_t mid = A->key + rows[k].delta;
-			uint64_t first = wide ? mid - 1 : mid, last = wide ? mid + 1 : mid;
-			while (cl[cur[k]].key < first)
+			const nrow_t *rk = &rows[k];
+			if ((rk->vy < 0 && cy == 0) ||
+			    (rk->vy > 0 && cy + 1 >= g->n[1]) ||
+			    (rk->vz > 0 && cz + 1 >= g->n[2]))
+				continue;
+			/* none of A's boxes reaches the row: nothing to find
+			 * (the cursor catches up later) */
+			const runs_t *r = &runs[rk->da];
+			size_t ni = 0;
+			for (int q = 0; q < r->n; q++)
+				ni += as[r->e[q]] - as[r->b[q]];
+			if (ni == 0)
+				continue;
+			uint64_t mid = akey + rk->delta;
+			while (cl->key[cur[k]] < mid - xlo)
 				cur[k]++;
-			for (size_t c = cur[k]; cl[c].key <= last; c++) {
-				const CELL *B = &cl[c];
-				unsigned da = rows[k].da, db = rows[k].db;
-				if (B->key < mid)
-					db |= 1;        /* vx = -1 */
-				else if (B->key > mid)
-					da |= 1;        /* vx = +1 */
-				for (int m = 0; m < NG; m++)
-					bs[m] = B->s[m];
-				bs[NG] = B[1].s[0];
-				/* one run: see group_f */
-				const runs_t *rb = &runs[db];
-				checks += FN(product)(e, as, &runs[da], bs[rb->b[0]],
-						      bs[rb->e[0]], 0, out);
+			size_t b = cur[k];
+			span_t t = {0, 0, 0, rk};
+			if (xlo && cl->key[b] == mid - 1) {
+				/* those reaching x (and y): a suffix, see
+				 * group_f */
+				t.s = cl->s[b * NG + runs[rk->db | 1].b[0]];
+				t.e0 = cl->s[++b * NG];
+			} else {
+				t.s = t.e0 = cl->s[b * NG];
 			}
+			if (cl->key[b] == mid)
+				t.e0 = cl->s[++b * NG];
+			t.e1 = xhi && cl->key[b] == mid + 1 ?
+			       cl->s[(b + 1) * NG] : t.e0;
+			if (t.s == t.e1)
+				continue;
+			total += ni * (t.e1 - t.s);
+			sp[ns++] = t;
 		}
+
+		int chunked = total > ROOM_MAX;
+		if (!chunked && !room(out, total))
+			return checks;
+		dem_pair_t *w = out->p + out->n;
+		for (uint32_t i = as[0]; i < as[NG]; i++) {
+			uint32_t end = e[i].f & 1 ? xend : as[NG];
+			if (chunked) {
+				out->n = (size_t)(w - out->p);
+				if (!room(out, end - i))
+					return checks;
+				w = out->p + out->n;
+			}
+			checks += end - i - 1;
+			w = FN(row)(e, &e[i], i + 1, end, w, AX_ANY, AX_ANY);
+		}
+		/* each kind of row written out, so that each gets its own
+		 * test: the row lies beyond A along z when vz = 1, and
+		 * along y as vy says */
+		for (int k = 0; k < ns && w; k++) {
+			const runs_t *r = &runs[sp[k].row->da];
+			int vy = sp[k].row->vy, vz = sp[k].row->vz;
+			if (vz == 0)
+				w = FN(rows)(e, as, r, &sp[k], w, chunked, out,
+					     &checks, AX_ABOVE, AX_ANY);
+			else if (vy < 0)
+				w = FN(rows)(e, as, r, &sp[k], w, chunked, out,
+					     &checks, AX_BELOW, AX_ABOVE);
+			else if (vy == 0)
+				w = FN(rows)(e, as, r, &sp[k], w, chunked, out,
+					     &checks, AX_ANY, AX_ABOVE);
+			else
+				w = FN(rows)(e, as, r, &sp[k], w, chunked, out,
+					     &checks, AX_ABOVE, AX_ABOVE);
+		}
+		if (!w)
+			return checks;
+		out->n = (size_t)(w - out->p);
 	}
 	return checks;
 }
@@ -237,7 +351,7 @@ typedef struct CTX {
 } CTX;
 
 /* Test every pair of the cell list that no axis forbids (disjoint migrated
- * bits, Fig. 2.8), branch-free as in product. */
+ * bits, Fig. 2.8); the test itself branch-free, as in row. */
 static void FN(check_cell)(CTX *x, const item_t *cs, size_t ns)
 {
 	const ENT *e = x->e;
@@ -256,7 +370,7 @@ static void FN(check_cell)(CTX *x, const item_t *cs, size_t ns)
 			const ENT *q = &e[cs[b].e];
 			checks++;
 			*w = (dem_pair_t){p->id, q->id};
-			w += FN(overlap)(p, q);
+			w += FN(overlap)(p, q, AX_ANY, AX_ANY);
 		}
 		out->n = (size_t)(w - out->p);
 	}
@@ -352,13 +466,16 @@ static void FN(sweep)(CTX *x, int d, const item_t *L, size_t n)
 }
 #endif
 
+/* The list sweep over the boxes in cell order: their cells into ch, the
+ * top list (every box, no bit set) into top, the lists of each level from
+ * the workspace. */
 static int FN(sweep_lists)(const grid_t *g, const ENT *ent, size_t n,
-			   CH *ch, dem_detect_ws_t *ws, dem_pairs_t *out,
-			   size_t *checks)
+			   CH *ch, item_t *top, dem_detect_ws_t *ws,
+			   dem_pairs_t *out, size_t *checks)
 {
-	item_t *top = dem_detect_ws_get(ws, WS_LIST,
-					(2 * DIM + 1) * n * sizeof *top);
-	if (!top)
+	item_t *lists = dem_detect_ws_get(ws, WS_LIST,
+					  2 * DIM * n * sizeof *lists);
+	if (!lists)
 		return DEM_EIO;
 	for (size_t k = 0; k < n; k++) {
 		for (int d = 0; d < DIM; d++) {
@@ -369,8 +486,8 @@ static int FN(sweep_lists)(const grid_t *g, const ENT *ent, size_t n,
 	}
 	CTX x = {.e = ent, .ch = ch, .out = out};
 	for (int d = 0; d < DIM; d++) {
-		x.buf[d][0] = top + (2 * d + 1) * n;
-		x.buf[d][1] = top + (2 * d + 2) * n;
+		x.buf[d][0] = lists + (2 * d) * n;
+		x.buf[d][1] = lists + (2 * d + 1) * n;
 	}
 #if DIM > 1
 	FN(sweep)(&x, DIM - 1, top, n);
@@ -387,43 +504,47 @@ static int FN(dcell_run)(const dem_boxes_t *b, const grid_t *g,
 {
 	size_t n = b->n, checks = 0, n0 = out->n;
 	int packed = g->kb <= 32;
+	int passes = sort_passes(g->kb);
 	size_t ksz = n * (packed ? sizeof(uint64_t) : sizeof(keyed_t));
-	/* WS_RAW later holds the cell table or the cell coordinates */
-	size_t rsz = n * sizeof(ENT);
-	if (rsz < (n + 1) * sizeof(CELL))
-		rsz = (n + 1) * sizeof(CELL);
-	ENT *raw = dem_detect_ws_get(ws, WS_RAW, rsz);
+	/* WS_RAW later holds the cell slots or the cell coordinates */
+	size_t rsz = n * sizeof(RAW);
+	if (rsz < CELL_SLOTS(n) * sizeof(uint32_t))
+		rsz = CELL_SLOTS(n) * sizeof(uint32_t);
+	if (rsz < n * sizeof(CH))
+		rsz = n * sizeof(CH);
+	RAW *raw = dem_detect_ws_get(ws, WS_RAW, rsz);
 	ENT *ent = dem_detect_ws_get(ws, WS_ENT, n * sizeof *ent);
 	void *key = dem_detect_ws_get(ws, WS_KEY, ksz);
-	void *tmp = dem_detect_ws_get(ws, WS_TMP, ksz);
-	if (!raw || !ent || !key || !tmp)
+	/* only the first entries, one per non-empty cell, are touched */
+	uint64_t *ckey = dem_detect_ws_get(ws, WS_CELL, (n + 1) * sizeof *ckey);
+	if (!raw || !ent || !key || !ckey)
 		return DEM_EIO;
+	/* The radix sort's other buffer is the box array, still unused: the
+	 * keys start in the one that makes them end in WS_KEY. */
+	static_assert(sizeof(ENT) >= sizeof(keyed_t), "room for the keys");
+	void *k0 = passes % 2 ? (void *)ent : key;
+	void *k1 = passes % 2 ? key : (void *)ent;
 
-	TT(0);
-	int near = FN(map)(b, g, raw, packed ? key : NULL, packed ? NULL : key);
-	TT(1);
+	int near = FN(map)(b, g, raw, packed ? k0 : NULL, packed ? NULL : k0);
 	sorted_t s = {NULL, NULL};
 	if (packed)
-		s.pk = sort_packed(key, tmp, n, g->kb);
+		s.pk = sort_packed(k0, k1, n, g->kb);
 	else
-		s.wk = sort_wide(key, tmp, n, g->kb);
-	TT(2);
-	for (size_t k = 0; k < n; k++)
-		ent[k] = raw[sorted_idx(&s, k)];
-	TT(3);
+		s.wk = sort_wide(k0, k1, n, g->kb);
+	FN(gather)(raw, &s, n, ent);
 	if (near) {
-		CELL *cl = (CELL *)(void *)raw;
-		size_t nc = FN(build_cells)(&s, n, cl);
-		TT(4);
-		checks = FN(sweep_near)(ent, cl, nc, g, out);
+		uint32_t *slots = (uint32_t *)(void *)raw;
+		size_t nc = FN(build_cells)(&s, n, ckey, slots);
+		CELLS cl = {ckey, slots};
+		checks = FN(sweep_near)(ent, &cl, nc, g, out);
 	} else {
-		TT(4);
-		if (FN(sweep_lists)(g, ent, n, (CH *)(void *)raw, ws, out,
+		/* cells in WS_RAW, the top list in WS_KEY: both done with */
+		static_assert(sizeof(item_t) <= sizeof(uint64_t), "room");
+		if (FN(sweep_lists)(g, ent, n, (CH *)(void *)raw, key, ws, out,
 				    &checks) != DEM_OK)
 			return DEM_EIO;
 	}
 	pairs_order(out, n0);
-	TT(5);
 	if (st)
 		st->checks += checks;
 	return out->nomem ? DEM_EIO : DEM_OK;
@@ -434,6 +555,10 @@ static int FN(dcell_run)(const dem_boxes_t *b, const grid_t *g,
 #undef ENT
 #undef CH
 #undef CTX
-#undef CELL
+#undef RAW
+#undef CELLS
+#undef CELL_SLOTS
+#undef GROUP_OF
+#undef ROOM_MAX
 #undef NG
 #undef FN

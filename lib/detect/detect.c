@@ -38,14 +38,19 @@ void dem_detect_ws_free(dem_detect_ws_t *ws)
 }
 
 /* A buffer that must grow gets 1/8 more than asked, so a set that grows a
- * little from step to step does not reallocate every step. */
+ * little from step to step does not reallocate every step.  Buffers start
+ * on a cache line, so records of 32 or 64 bytes never straddle two. */
 void *dem_detect_ws_get(dem_detect_ws_t *ws, int slot, size_t bytes)
 {
+	enum { LINE = 64 };
+
+	if (bytes == 0)
+		bytes = 1;      /* a buffer all the same, not NULL */
 	if (bytes <= ws->cap[slot])
 		return ws->buf[slot];
 	free(ws->buf[slot]);
-	size_t cap = bytes + bytes / 8;
-	ws->buf[slot] = malloc(cap);
+	size_t cap = (bytes + bytes / 8 + LINE - 1) / LINE * LINE;
+	ws->buf[slot] = aligned_alloc(LINE, cap);
 	ws->cap[slot] = ws->buf[slot] ? cap : 0;
 	return ws->buf[slot];
 }
@@ -102,7 +107,8 @@ static void resolve_cell(const dem_boxes_t *b, const dem_detect_opts_t *o,
 			max = hi[i] > max ? hi[i] : max;
 		}
 		if (max > min)
-			cell[d] = (max - min) * pow(f / (double)n, 1.0 / b->dim);
+			cell[d] = (max - min) *
+				  pow(f / (double)n, 1.0 / b->dim);
 		else
 			cell[d] = 1;
 	}
