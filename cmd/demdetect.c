@@ -23,16 +23,17 @@
 #define PROG "demdetect"
 
 enum { OPT_SHAPE = DEM_OPT_PROGRAM, OPT_CELL, OPT_CELL_SIZE, OPT_BUFFER,
-       OPT_PERIODIC };
+       OPT_PERIODIC, OPT_REPEAT };
 
 static const dem_opt_t options[] = {
 	{"algorithm", 'a', "ALGO", "dcell (default), nbs (2D), scell, adt, asdt or brute"},
 	{"count", 'c', NULL, "print only the number of pairs"},
 	{"shape", OPT_SHAPE, "[=TOL]", "keep pairs whose disks/spheres overlap by more than TOL x the smaller radius (default 0)"},
-	{"cell", OPT_CELL, "FACTOR", "cell size as a multiple of the mean object size (default 3 in 2D, 5 in 3D)"},
+	{"cell", OPT_CELL, "FACTOR", "cell size as a multiple of the mean object size (default 3 in 2D, 2 in 3D)"},
 	{"cell-size", OPT_CELL_SIZE, "L", "cell size as a length (overrides --cell)"},
 	{"buffer", OPT_BUFFER, "B", "enlarge every particle's box by B on each side (default 0)"},
 	{"periodic", OPT_PERIODIC, "AXES", "periodic along AXES (e.g. x, xy, xyz), period from the stream's domain"},
+	{"repeat", OPT_REPEAT, "N", "detect N times with warm buffers, as a time loop does; report the median repeat as detect_warm_s"},
 	DEM_OPTS_COMMON,
 	{0}
 };
@@ -54,6 +55,7 @@ struct override {
 struct cmdline {
 	const char *input, *scene, *output;
 	int binary, gzip, dump, verbose, quiet, count;
+	unsigned long repeat;   /* detections to time (1: just the one) */
 	struct override *ov;    /* scene keys set by options, in order */
 	int nov;
 };
@@ -72,6 +74,7 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 	unsigned long seed;
 
 	memset(cl, 0, sizeof *cl);
+	cl->repeat = 1;
 	/* each argument sets at most two keys (--shape TOL) */
 	cl->ov = malloc(2 * (size_t)argc * sizeof *cl->ov);
 	if (!cl->ov || dem_cli_init(&c, PROG, options) != 0)
@@ -86,6 +89,9 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 		case 'v': cl->verbose++; break;
 		case 'q': cl->quiet = 1; break;
 		case 'c': cl->count = 1; break;
+		case OPT_REPEAT:
+			dem_cli_ulong(&c, "--repeat", optarg, 1, 1000000, &cl->repeat);
+			break;
 		case DEM_OPT_SEED:      /* accepted for a common interface; unused */
 			dem_cli_ulong(&c, "--seed", optarg, 0, 0xffffffffUL, &seed);
 			break;
@@ -373,10 +379,43 @@ static int write_pairs(const struct cmdline *cl, dem_reader_t *rd, int argc,
 	return dem_writer_close(w, e);
 }
 
+static int cmp_double(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+	return (x > y) - (x < y);
+}
+
+/* --repeat: the steady cost of detection in a time loop, where buffers are
+ * warm from the step before: the median of n more runs. */
+static int time_repeats(const dem_boxes_t *b, const dem_detect_opts_t *o,
+			unsigned long n, dem_cost_t *cost, dem_error_t *e)
+{
+	double *t = malloc(n * sizeof *t);
+	dem_pairs_t p;
+	int rc = DEM_OK;
+
+	if (!t)
+		return dem_error_nomem(e, "timings");
+	dem_pairs_init(&p);
+	for (unsigned long k = 0; k < n && rc == DEM_OK; k++) {
+		p.n = 0;
+		double t0 = dem_wall();
+		rc = dem_detect(b, o, &p, NULL, e);
+		t[k] = dem_wall() - t0;
+	}
+	if (rc == DEM_OK) {
+		qsort(t, n, sizeof *t, cmp_double);
+		dem_cost_time(cost, "detect_warm", n % 2 ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]));
+	}
+	dem_pairs_free(&p);
+	free(t);
+	return rc;
+}
+
 int main(int argc, char **argv)
 {
 	struct cmdline cl;
-	struct settings set;
+	struct settings set = {0};
 	struct objects ob = {0};
 	dem_error_t e = {0};
 	dem_scene_t *scene = NULL;
@@ -423,10 +462,16 @@ int main(int argc, char **argv)
 		goto fail;
 	dem_cost_time(&cost, "read", dem_wall() - t);
 
+	if (cl.repeat > 1 && !(set.opts.ws = dem_detect_ws_new())) {
+		rc = dem_error_nomem(&e, "detection workspace");
+		goto fail;
+	}
 	t = dem_wall();
 	if ((rc = dem_detect(&ob.b, &set.opts, &pairs, &stats, &e)))
 		goto fail;
 	dem_cost_time(&cost, "detect", dem_wall() - t);
+	if (cl.repeat > 1 && (rc = time_repeats(&ob.b, &set.opts, cl.repeat - 1, &cost, &e)))
+		goto fail;
 	size_t boxpairs = pairs.n;
 	if (set.shape) {
 		t = dem_wall();
@@ -460,6 +505,7 @@ int main(int argc, char **argv)
 			dem_detect_algo_name(set.opts.algo), ob.n, stats.cell[0],
 			stats.cell[1], stats.cell[2]);
 done:
+	dem_detect_ws_free(set.opts.ws);
 	dem_pairs_free(&pairs);
 	objects_free(&ob);
 	dem_reader_close(rd);
@@ -476,6 +522,7 @@ fail:
 	if (rc == DEM_EUSAGE)
 		fprintf(stderr, "Try '%s --help' for more information.\n", PROG);
 	free(cl.ov);
+	dem_detect_ws_free(set.opts.ws);
 	dem_pairs_free(&pairs);
 	objects_free(&ob);
 	dem_reader_close(rd);

@@ -57,8 +57,9 @@ typedef struct dem_detect_opts {
 	/* Cell size of the cell methods, per axis.  0 means: cell_factor times
 	 * the mean box extent (the Ch. 2.5 rule). */
 	double cell[DEM_MAXDIM];
-	/* Multiplier of the mean box extent; 0 means the Ch. 2.5 default,
-	 * 3 in 2D and 5 in 3D. */
+	/* Multiplier of the mean box extent; 0 means the default, 3 in 2D
+	 * (the Ch. 2.5 rule) and 2 in 3D (measured optimum; Ch. 2.5 found
+	 * about 5 for its implementation). */
 	double cell_factor;
 	/* Periodic axes: bit d set means axis d is periodic with period
 	 * period_hi[d] - period_lo[d] (minimum image: every box must be shorter
@@ -103,6 +104,7 @@ int dem_detect_algo_parse(const char *name);
  * box set the options cannot handle (NBS in 3D, a box longer than half a
  * period, more than 2^32-1 boxes), DEM_EIO when memory runs out.  stats may
  * be NULL. */
+/* stats (reset first) receives the counters of this call. */
 int dem_detect(const dem_boxes_t *b, const dem_detect_opts_t *o,
 	       dem_pairs_t *out, dem_detect_stats_t *stats, dem_error_t *e);
 

@@ -731,3 +731,20 @@ demdetect" ]
 		[[ $output =~ ^[0-9]+$ ]]
 	done < ex.sh
 }
+
+@test "demdetect --repeat N: same pairs as one call; the cost line adds detect_warm_s" {
+	# The repeats reuse the workspace (warm buffers); the output is the
+	# first call's, identical to a plain run, for 2D and 3D and periodic.
+	dempack random -n 3000 --lambda 5 --seed 31 > "$T/p2" 2>/dev/null
+	dempack random --dim 3 -n 3000 --lambda 5 --seed 32 > "$T/p3" 2>/dev/null
+	for p in p2 p3; do
+		demdetect "$T/$p" > "$T/one" 2>/dev/null
+		run --separate-stderr demdetect --repeat 4 "$T/$p"
+		[ "$status" -eq 0 ]
+		diff <(grep -v '^# prog' "$T/one") <(printf '%s\n' "$output" | grep -v '^# prog')
+		[[ ${stderr_lines[-1]} == *" detect_s="*" detect_warm_s="* ]]
+		[ "$(demdetect --periodic xy --repeat 3 -c "$T/$p" 2>/dev/null)" -eq \
+		  "$(demdetect --periodic xy -c "$T/$p" 2>/dev/null)" ]
+	done
+	usage_error demdetect --repeat 0 "$T/p2"
+}
