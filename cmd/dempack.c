@@ -4,9 +4,13 @@
  *                                in a box sized for a target density (Ch. 2.5)
  *   dempack front [options]      disks filling a rectangle by an advancing
  *                                front, closed or open form (Ch. 5.2)
+ *   dempack shots [options]      the impacts of a peening job, pass by pass:
+ *                                an offset n x n grid (Ch. 8.6) or random
+ *                                positions up to a coverage (Ch. 7.1.3)
  *
- * Writes a particle stream (x y [z] r) on standard output or to -o FILE.
- * The scene's pack: section gives the defaults; options override it.
+ * Writes a particle stream (x y [z] r), or for shots a shot stream, on
+ * standard output or to -o FILE.  The scene's pack: section (and shot: for
+ * shots) gives the defaults; options override it.
  */
 #include <math.h>
 #include <stdio.h>
@@ -16,6 +20,7 @@
 #include <gsl/gsl_errno.h>
 
 #include "core/cli.h"
+#include "core/consts.h"
 #include "core/cost.h"
 #include "core/fmt.h"
 #include "core/radius.h"
@@ -24,14 +29,17 @@
 #include "io/stream.h"
 #include "pack/front.h"
 #include "pack/random.h"
+#include "pack/shots.h"
 
 #define PROG "dempack"
 
 enum { OPT_DIM = DEM_OPT_PROGRAM, OPT_DENSITY, OPT_LAW, OPT_RMIN, OPT_LAMBDA,
-       OPT_ASPECT, OPT_FORM, OPT_DOMAIN, OPT_CHECK_LIMIT, OPT_GRAVITY };
+       OPT_ASPECT, OPT_FORM, OPT_DOMAIN, OPT_CHECK_LIMIT, OPT_GRAVITY,
+       OPT_PATTERN, OPT_AREA, OPT_GRID, OPT_PASSES, OPT_COVERAGE, OPT_PER_PASS,
+       OPT_SEPARATION, OPT_DIMPLE, OPT_SPEED, OPT_ANGLE, OPT_SHOT_RADIUS };
 
-enum { METHOD_RANDOM, METHOD_FRONT };
-static const char *const methods[] = {"random", "front", NULL};
+enum { METHOD_RANDOM, METHOD_FRONT, METHOD_SHOTS };
+static const char *const methods[] = {"random", "front", "shots", NULL};
 
 static const dem_opt_t options[] = {
 	{"dim", OPT_DIM, "D", "dimension: 2 (disks) or 3 (spheres); default 2"},
@@ -45,13 +53,25 @@ static const dem_opt_t options[] = {
 	{"domain", OPT_DOMAIN, "XLO:YLO:XHI:YHI", "front: the rectangle to fill; default 0:0:50:50 (m)"},
 	{"check-limit", OPT_CHECK_LIMIT, "K", "front: check at most K front disks each way; default 0, no limit"},
 	{"gravity", OPT_GRAVITY, NULL, "front, open form: each disk rests stably under gravity (-y)"},
+	{"pattern", OPT_PATTERN, "P", "shots: grid (offset n x n per pass) or random; default grid"},
+	{"area", OPT_AREA, "AX:AY", "shots: sides of the impact area; default 5.6mm:5.6mm"},
+	{"grid", OPT_GRID, "N", "shots, grid: N x N shots per pass; default 4"},
+	{"passes", OPT_PASSES, "N", "shots: number of passes; default 32"},
+	{"coverage", OPT_COVERAGE, "PCT", "shots, random: target coverage in percent (100 = 98 % dimpled)"},
+	{"per-pass", OPT_PER_PASS, "N", "shots, random: shots per pass; default 8"},
+	{"separation", OPT_SEPARATION, "F", "shots, random: centres of a pass F (ri + rj) apart; default 1"},
+	{"dimple-radius", OPT_DIMPLE, "L", "shots: dimple radius for coverage (needed with --coverage)"},
+	{"speed", OPT_SPEED, "V", "shots: impact speed; default 46.5 m/s"},
+	{"angle", OPT_ANGLE, "A", "shots: impingement angle to the surface; default 90 deg"},
+	{"shot-radius", OPT_SHOT_RADIUS, "R", "shots: shot radius; default 0.7 mm (S550)"},
 	DEM_OPTS_COMMON,
 	{0}
 };
 
 static const char usage[] =
 	"Usage: dempack random [OPTION]...\n"
-	"  or:  dempack front [OPTION]...\n";
+	"  or:  dempack front [OPTION]...\n"
+	"  or:  dempack shots [OPTION]...\n";
 static const char purpose[] =
 	"Make a packing of disks or spheres and write it as a particle stream.\n"
 	"\n"
@@ -60,11 +80,16 @@ static const char purpose[] =
 	"            density; overlaps allowed (the detection test sets of Ch. 2.5)\n"
 	"  front     disks filling a rectangle densely and without overlap by an\n"
 	"            advancing front, closed or open form (Ch. 5.2); disks not wholly\n"
-	"            inside are culled; the density reached is in the header";
+	"            inside are culled; the density reached is in the header\n"
+	"  shots     the impacts of a peening job as a shot stream, pass by pass: an\n"
+	"            n x n grid offset in every pass (Ch. 8.6) or random positions\n"
+	"            until a target coverage (Ch. 7.1.3)";
 static const char epilogue[] =
 	"Example:\n"
 	"  dempack random --dim 2 -n 1000000 --density 0.6 --lambda 10 --law urd --seed 1 -b\n"
 	"  dempack front --domain 0:0:1500:1500 --rmin 0.5 --lambda 2 --seed 1 -b\n"
+	"  dempack shots --grid 4 --passes 32 --area 5.6mm:5.6mm --speed 46.5\n"
+	"  dempack shots --pattern random --coverage 200 --dimple-radius 0.4mm --seed 1\n"
 	"\nSee dempack(1), dem-scene(5) and dem-streams(5).\n";
 
 struct override {
@@ -80,7 +105,8 @@ struct cmdline {
 	int nov;
 	char *aspect;           /* --aspect rewritten as a scene vector */
 	char *domain;           /* --domain likewise */
-	unsigned long given;    /* method options given: bit (key - OPT_DIM) */
+	char *area;             /* --area likewise */
+	unsigned long given;    /* method options given: bit i of method_opts */
 };
 
 static void cmdline_free(struct cmdline *cl)
@@ -88,6 +114,7 @@ static void cmdline_free(struct cmdline *cl)
 	free(cl->ov);
 	free(cl->aspect);
 	free(cl->domain);
+	free(cl->area);
 }
 
 /* "a:b:c" -> "a, b, c", which the scene reads as a vector; NULL without
@@ -103,18 +130,33 @@ static char *colon_vector(char **buf, const char *text)
 	return *buf;
 }
 
-/* The method options that only one method reads; given to the other
- * they are usage errors. */
+/* The method options and the methods that read them (a bit per method);
+ * given to another method they are usage errors.  Shots take their radius
+ * law from the scene's shot: section, so --law, --rmin and --lambda (the
+ * pack.radius keys) are not theirs. */
+#define M_RANDOM (1u << METHOD_RANDOM)
+#define M_FRONT (1u << METHOD_FRONT)
+#define M_SHOTS (1u << METHOD_SHOTS)
 static const struct {
-	int key, method;
+	int key;
+	unsigned methods;
 	const char *name;
 } method_opts[] = {
-	{OPT_DIM, METHOD_RANDOM, "--dim"}, {'n', METHOD_RANDOM, "--number"},
-	{OPT_DENSITY, METHOD_RANDOM, "--density"}, {OPT_ASPECT, METHOD_RANDOM, "--aspect"},
-	{OPT_FORM, METHOD_FRONT, "--form"}, {OPT_DOMAIN, METHOD_FRONT, "--domain"},
-	{OPT_CHECK_LIMIT, METHOD_FRONT, "--check-limit"}, {OPT_GRAVITY, METHOD_FRONT, "--gravity"},
+	{OPT_DIM, M_RANDOM, "--dim"}, {'n', M_RANDOM, "--number"},
+	{OPT_DENSITY, M_RANDOM, "--density"}, {OPT_ASPECT, M_RANDOM, "--aspect"},
+	{OPT_LAW, M_RANDOM | M_FRONT, "--law"}, {OPT_RMIN, M_RANDOM | M_FRONT, "--rmin"},
+	{OPT_LAMBDA, M_RANDOM | M_FRONT, "--lambda"},
+	{OPT_FORM, M_FRONT, "--form"}, {OPT_DOMAIN, M_FRONT, "--domain"},
+	{OPT_CHECK_LIMIT, M_FRONT, "--check-limit"}, {OPT_GRAVITY, M_FRONT, "--gravity"},
+	{OPT_PATTERN, M_SHOTS, "--pattern"}, {OPT_AREA, M_SHOTS, "--area"},
+	{OPT_GRID, M_SHOTS, "--grid"}, {OPT_PASSES, M_SHOTS, "--passes"},
+	{OPT_COVERAGE, M_SHOTS, "--coverage"}, {OPT_PER_PASS, M_SHOTS, "--per-pass"},
+	{OPT_SEPARATION, M_SHOTS, "--separation"}, {OPT_DIMPLE, M_SHOTS, "--dimple-radius"},
+	{OPT_SPEED, M_SHOTS, "--speed"}, {OPT_ANGLE, M_SHOTS, "--angle"},
+	{OPT_SHOT_RADIUS, M_SHOTS, "--shot-radius"},
 };
 #define NMETHOD_OPTS (sizeof method_opts / sizeof method_opts[0])
+_Static_assert(NMETHOD_OPTS <= 32, "cmdline.given holds a bit per method option");
 
 static void add_override(struct cmdline *cl, const char *key, const char *text,
 			 const char *origin)
@@ -176,6 +218,21 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 			break;
 		case OPT_CHECK_LIMIT: add_override(cl, "pack.check_limit", optarg, "--check-limit"); break;
 		case OPT_GRAVITY: add_override(cl, "pack.gravity", "true", "--gravity"); break;
+		case OPT_PATTERN: add_override(cl, "pack.pattern", optarg, "--pattern"); break;
+		case OPT_AREA:
+			if (!colon_vector(&cl->area, optarg))
+				return DEM_EIO;
+			add_override(cl, "pack.area", cl->area, "--area");
+			break;
+		case OPT_GRID: add_override(cl, "pack.grid", optarg, "--grid"); break;
+		case OPT_PASSES: add_override(cl, "pack.passes", optarg, "--passes"); break;
+		case OPT_COVERAGE: add_override(cl, "pack.coverage", optarg, "--coverage"); break;
+		case OPT_PER_PASS: add_override(cl, "pack.per_pass", optarg, "--per-pass"); break;
+		case OPT_SEPARATION: add_override(cl, "pack.separation", optarg, "--separation"); break;
+		case OPT_DIMPLE: add_override(cl, "pack.dimple_radius", optarg, "--dimple-radius"); break;
+		case OPT_SPEED: add_override(cl, "shot.speed", optarg, "--speed"); break;
+		case OPT_ANGLE: add_override(cl, "shot.angle", optarg, "--angle"); break;
+		case OPT_SHOT_RADIUS: add_override(cl, "shot.radius", optarg, "--shot-radius"); break;
 		default:
 			break;
 		}
@@ -191,11 +248,11 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 			if (strcmp(cl->method, methods[i]) == 0)
 				m = i;
 		if (!cl->method && !cl->dump)
-			dem_cli_error(&c, "no method given (random or front)");
+			dem_cli_error(&c, "no method given (random, front or shots)");
 		else if (cl->method && m < 0)
-			dem_cli_error(&c, "unknown method '%s' (this version has: random, front)", cl->method);
+			dem_cli_error(&c, "unknown method '%s' (this version has: random, front, shots)", cl->method);
 		for (size_t i = 0; m >= 0 && i < NMETHOD_OPTS; i++)
-			if ((cl->given >> i & 1) && method_opts[i].method != m)
+			if ((cl->given >> i & 1) && !(method_opts[i].methods >> m & 1))
 				dem_cli_error(&c, "%s: not an option of method %s", method_opts[i].name, methods[m]);
 		if (m >= 0)     /* the method typed wins over the scene's */
 			add_override(cl, "pack.method", cl->method, cl->method);
@@ -250,16 +307,96 @@ static int read_law(dem_scene_t *s, dem_radius_law_t *law, dem_error_t *e)
 	return DEM_OK;
 }
 
+/* A key that only the other pattern reads, given anyway. */
+static int other_pattern(dem_scene_t *s, const char *const *keys, int pattern,
+			 dem_error_t *e)
+{
+	for (int i = 0; keys[i]; i++)
+		if (dem_scene_has(s, keys[i]))
+			return dem_scene_error(s, keys[i], e, "not read with pack.pattern %s",
+					       dem_shots_pattern_names[pattern]);
+	return DEM_OK;
+}
+
+/* The shot: section (the shot itself) and the pattern keys of pack:. */
+static int read_shots(dem_scene_t *s, dem_shots_spec_t *sp, dem_error_t *e)
+{
+	static const double area0[2] = {0.0056, 0.0056}, centre0[2] = {0, 0};
+	static const char *const random_keys[] = {"pack.coverage", "pack.per_pass",
+						  "pack.separation", NULL};
+	static const char *const grid_keys[] = {"pack.grid", NULL};
+	double area[2], centre[2], r, lambda, dimple = NAN, coverage = NAN;
+	long grid = 4, passes = 32, per_pass = 8;
+	int pattern, law;
+
+	/* S550 shot at 46.5 m/s, normal to the surface: Ch. 8.6 */
+	if (dem_scene_quantity(s, "shot.radius", DEM_DIM_LENGTH, 0.0007, DEM_SCENE_GT0, HUGE_VAL, &r, e) ||
+	    dem_scene_choice(s, "shot.law", dem_radius_names, DEM_RADIUS_MONO, &law, e) ||
+	    dem_scene_quantity(s, "shot.lambda", DEM_DIM_NONE, 1, 1, 1e9, &lambda, e) ||
+	    dem_scene_quantity(s, "shot.speed", DEM_DIM_VELOCITY, 46.5, DEM_SCENE_GT0, HUGE_VAL, &sp->speed, e) ||
+	    dem_scene_quantity(s, "shot.speed_scatter", DEM_DIM_NONE, 0, 0, 0.33, &sp->speed_scatter, e) ||
+	    dem_scene_quantity(s, "shot.angle", DEM_DIM_ANGLE, DEM_PI / 2, DEM_SCENE_GT0, DEM_PI / 2, &sp->angle, e) ||
+	    dem_scene_quantity(s, "shot.azimuth", DEM_DIM_ANGLE, 0, -2 * DEM_PI, 2 * DEM_PI, &sp->azimuth, e) ||
+	    dem_scene_choice(s, "pack.pattern", dem_shots_pattern_names, DEM_SHOTS_GRID, &pattern, e) ||
+	    dem_scene_vector(s, "pack.area", DEM_DIM_LENGTH, 2, area0, DEM_SCENE_GT0, HUGE_VAL, area, e) ||
+	    dem_scene_vector(s, "pack.center", DEM_DIM_LENGTH, 2, centre0, -HUGE_VAL, HUGE_VAL, centre, e))
+		return e->code;
+	sp->pattern = (dem_shots_pattern_t)pattern;
+	sp->law = (dem_radius_law_t){(dem_radius_kind_t)law, r, r * lambda};
+	for (int d = 0; d < 2; d++) {
+		sp->lo[d] = centre[d] - area[d] / 2;
+		sp->hi[d] = centre[d] + area[d] / 2;
+	}
+	if (pattern == DEM_SHOTS_GRID) {
+		if (other_pattern(s, random_keys, pattern, e) ||
+		    dem_scene_int(s, "pack.grid", 4, 1, 65535, &grid, e) ||
+		    dem_scene_int(s, "pack.passes", 32, 1, 1000000000L, &passes, e))
+			return e->code;
+	} else {
+		if (other_pattern(s, grid_keys, pattern, e) ||
+		    dem_scene_quantity(s, "pack.coverage", DEM_DIM_NONE, NAN, DEM_SCENE_GT0, 10000, &coverage, e) ||
+		    dem_scene_int(s, "pack.per_pass", 8, 1, 1000000L, &per_pass, e) ||
+		    dem_scene_quantity(s, "pack.separation", DEM_DIM_NONE, 1, 0, 100, &sp->separation, e))
+			return e->code;
+		/* a coverage decides the number of passes */
+		if (isnan(coverage) && dem_scene_int(s, "pack.passes", 32, 1, 1000000000L, &passes, e))
+			return e->code;
+		if (!isnan(coverage) && dem_scene_has(s, "pack.passes"))
+			return dem_scene_error(s, "pack.passes", e, "not read with pack.coverage, "
+					       "which sets the number of passes; give one or the other");
+	}
+	if (dem_scene_quantity(s, "pack.dimple_radius", DEM_DIM_LENGTH, NAN, DEM_SCENE_GT0, HUGE_VAL, &dimple, e))
+		return e->code;
+	/* No default: the dimple depends on shot, speed and material, and
+	 * demprofile measures it; a guess would make the coverage a guess. */
+	if (!isnan(coverage) && isnan(dimple))
+		return dem_scene_error(s, "pack.dimple_radius", e, "required with pack.coverage "
+				       "(--coverage): the radius of one dimple, which the coverage "
+				       "counts, e.g. 0.4 mm (--dimple-radius)");
+	sp->grid = (int)grid;
+	sp->passes = passes;
+	sp->per_pass = per_pass;
+	sp->coverage = isnan(coverage) ? 0 : coverage;
+	sp->dimple_radius = isnan(dimple) ? 0 : dimple;
+	return DEM_OK;
+}
+
 /* The pack: section, resolved: the method, then its keys. */
 static int read_scene(dem_scene_t *s, int *method, dem_random_spec_t *sp,
-		      dem_front_spec_t *fp, dem_error_t *e)
+		      dem_front_spec_t *fp, dem_shots_spec_t *hp, dem_error_t *e)
 {
 	static const char *const sections[] = {"pack", NULL};
+	static const char *const shot_sections[] = {"pack", "shot", NULL};
 	long dim, n;
 	const double one[3] = {1, 1, 1};
 
 	if (dem_scene_choice(s, "pack.method", methods, METHOD_RANDOM, method, e))
 		return e->code;
+	if (*method == METHOD_SHOTS) {
+		if (read_shots(s, hp, e))
+			return e->code;
+		return dem_scene_check(s, shot_sections, e);
+	}
 	if (*method == METHOD_FRONT) {
 		if (read_law(s, &fp->law, e) || read_front(s, fp, e))
 			return e->code;
@@ -372,6 +509,98 @@ static int write_front(const dem_front_spec_t *fp, const struct cmdline *cl,
 	return DEM_OK;
 }
 
+static int shots_emit(void *ctx, const dem_shot_t *sh)
+{
+	struct emit_ctx *c = ctx;
+	double row[8] = {(double)sh->pass, sh->t, sh->x[0], sh->x[1], sh->r,
+			 sh->v[0], sh->v[1], sh->v[2]};
+	return dem_writer_row(c->w, row, c->e);
+}
+
+/* dempack shots: plan the stream (a dry run from the seed finds the number
+ * of impacts a coverage needs, and the coverage reached), write the header
+ * with it, then draw the same shots again and write them. */
+static int write_shots(const dem_shots_spec_t *sp, const struct cmdline *cl,
+		       int argc, char **args, dem_cost_t *cost, dem_error_t *e)
+{
+	static const char *const cols[] = {"t", "x", "y", "r", "vx", "vy", "vz"};
+	static const char *const units[] = {"s", "m", "m", "m", "m/s", "m/s", "m/s"};
+	char b[8][32];
+	dem_header_t h;
+	dem_shots_plan_t plan;
+	dem_writer_t *w = NULL;
+	int rc;
+
+	double t0 = dem_wall();
+	if ((rc = dem_shots_plan(sp, cl->seed, &plan, e)))
+		return rc;
+	if (plan.passes > 0xffffffffUL)
+		return dem_error_set(e, DEM_EINPUT, "%zu passes: more than a u32 column holds", plan.passes);
+
+	dem_header_init(&h, "shots", 1, 3);
+	dem_header_add_col(&h, "pass", DEM_U32, "-");
+	for (int i = 0; i < 7; i++)
+		dem_header_add_col(&h, cols[i], DEM_F64, units[i]);
+	dem_header_add_provenance(&h, PROG, argc, args, 1, cl->seed);
+	dem_header_add(&h, "seed", "%lu", cl->seed);
+	if (sp->pattern == DEM_SHOTS_GRID) {
+		dem_header_add(&h, "method", "shots pattern=grid grid=%d passes=%zu per_pass=%zu",
+			       sp->grid, plan.passes, plan.per_pass);
+	} else {
+		dem_fmt_double(b[0], sp->separation);
+		dem_header_add(&h, "method", "shots pattern=random passes=%zu per_pass=%zu separation=%s",
+			       plan.passes, plan.per_pass, b[0]);
+	}
+	dem_fmt_double(b[0], sp->law.rmin);
+	dem_fmt_double(b[1], sp->law.rmax / sp->law.rmin);
+	dem_fmt_double(b[2], sp->speed);
+	dem_fmt_double(b[3], sp->speed_scatter);
+	/* degrees to 12 digits, so 60 deg reads 60, not 59.99999999999999 */
+	dem_header_add(&h, "shot", "law=%s radius=%s lambda=%s speed=%s speed_scatter=%s "
+		       "angle_deg=%.12g azimuth_deg=%.12g", dem_radius_names[sp->law.kind],
+		       b[0], b[1], b[2], b[3], sp->angle * 180 / DEM_PI, sp->azimuth * 180 / DEM_PI);
+	dem_fmt_double(b[0], sp->lo[0]);
+	dem_fmt_double(b[1], sp->lo[1]);
+	dem_fmt_double(b[2], sp->hi[0]);
+	dem_fmt_double(b[3], sp->hi[1]);
+	dem_header_add(&h, "area", "%s %s %s %s", b[0], b[1], b[2], b[3]);
+	if (sp->dimple_radius > 0) {
+		char cov[160];
+		int n = 0;
+		if (sp->coverage > 0) {
+			dem_fmt_double(b[4], sp->coverage);
+			n += snprintf(cov + n, sizeof cov - (size_t)n, "target=%s ", b[4]);
+		}
+		dem_fmt_double(b[5], plan.covered);
+		n += snprintf(cov + n, sizeof cov - (size_t)n, "covered=%s", b[5]);
+		if (plan.impacts_100)   /* 0: the stream never covers 98 % */
+			n += snprintf(cov + n, sizeof cov - (size_t)n, " impacts_100=%zu", plan.impacts_100);
+		dem_fmt_double(b[6], sp->dimple_radius);
+		snprintf(cov + n, sizeof cov - (size_t)n, " dimple_radius=%s", b[6]);
+		dem_header_add(&h, "coverage", "%s", cov);
+	}
+
+	int flags = (cl->binary ? DEM_STREAM_BINARY : 0) | (cl->gzip ? DEM_STREAM_GZIP : 0);
+	if ((rc = dem_writer_open(&w, cl->output, &h, flags, e)))
+		goto out;
+	struct emit_ctx ctx = {w, e, 0};
+	if ((rc = dem_pack_shots(sp, cl->seed, &plan, shots_emit, &ctx, e)))
+		goto out;
+	rc = dem_writer_close(w, e);
+	w = NULL;
+	if (rc)
+		goto out;
+	dem_cost_time(cost, "pack", dem_wall() - t0);
+	dem_cost_count(cost, "shots", (double)plan.shots);
+	dem_cost_count(cost, "passes", (double)plan.passes);
+	if (sp->dimple_radius > 0)
+		dem_cost_count(cost, "coverage", plan.covered);
+out:
+	dem_writer_abort(w);
+	dem_header_free(&h);
+	return rc;
+}
+
 int main(int argc, char **argv)
 {
 	struct cmdline cl;
@@ -380,6 +609,7 @@ int main(int argc, char **argv)
 	dem_writer_t *w = NULL;
 	dem_random_spec_t sp;
 	dem_front_spec_t fp = {0};
+	dem_shots_spec_t hp = {0};
 	dem_cost_t cost;
 	int rc, method;
 
@@ -400,7 +630,7 @@ int main(int argc, char **argv)
 	for (int i = 0; i < cl.nov; i++)
 		if ((rc = dem_scene_override(scene, cl.ov[i].key, cl.ov[i].text, cl.ov[i].origin, &e)))
 			goto fail;
-	if ((rc = read_scene(scene, &method, &sp, &fp, &e)))
+	if ((rc = read_scene(scene, &method, &sp, &fp, &hp, &e)))
 		goto fail;
 	if (cl.dump) {
 		dem_scene_dump(scene, stdout);
@@ -412,6 +642,17 @@ int main(int argc, char **argv)
 
 	gsl_rng *probe = dem_rng_new(&cl.have_seed, &cl.seed);  /* draws a seed if none */
 	gsl_rng_free(probe);
+	if (method == METHOD_SHOTS) {
+		if ((rc = write_shots(&hp, &cl, argc, args, &cost, &e)))
+			goto fail;
+		dem_scene_free(scene);
+		free(args);
+		cmdline_free(&cl);
+		if (!cl.output && (rc = dem_cli_close_stdout(PROG)))
+			return rc;
+		dem_cost_print(&cost, PROG, stderr);
+		return 0;
+	}
 
 	/* The domain depends on the radii drawn: size it first, then write. */
 	dem_header_t h;

@@ -392,3 +392,109 @@ close_to() {
 	[ "$status" -eq 0 ]
 	[[ ${stderr_lines[-1]} == "dempack: cost: wall_s="*" objects=5" ]]
 }
+
+# ---- dempack shots (Han 2004, Ch. 7.1.3 and 8.6; dem-streams(5) "shots") ----
+
+@test "dempack shots: the Ch. 8.6 layout gives 512 rows, 16 in each of 32 passes, inside the area" {
+	run --separate-stderr dempack shots --grid 4 --passes 32 --area 5.6mm:5.6mm \
+		--shot-radius 0.7mm --speed 46.5 --seed 1
+	[ "$status" -eq 0 ]
+	echo "$output" > "$T/s"
+	[ "${lines[0]}" = "# dem shots 1" ]
+	grep -qx '# columns pass:u32:- t:f64:s x:f64:m y:f64:m r:f64:m vx:f64:m/s vy:f64:m/s vz:f64:m/s' "$T/s"
+	grep -qx '# method shots pattern=grid grid=4 passes=32 per_pass=16' "$T/s"
+	grep -qx '# area -0.0028 -0.0028 0.0028 0.0028' "$T/s"
+	[ "$(rows "$T/s")" -eq 512 ]
+	[ "${lines[-1]}" = "# end 512" ]
+	# 16 rows per pass 0..31; inside the area; r 0.7 mm; v = (0, 0, -46.5)
+	awk '!/^#/ { n[$1]++; if ($3 < -0.0028 || $3 >= 0.0028 || $4 < -0.0028 || $4 >= 0.0028) bad++
+	             if ($5 != 0.0007 || $6 != 0 || $7 != 0 || $8 != -46.5 || $2 != 0) bad++ }
+	     END { for (p = 0; p < 32; p++) if (n[p] != 16) bad++; exit bad > 0 }' "$T/s"
+	[[ ${stderr_lines[-1]} =~ ^dempack:\ cost:\ wall_s=[0-9.]+\ cpu_s=[0-9.]+\ rss_mb=[0-9.]+\ pack_s=[0-9.]+\ shots=512\ passes=32$ ]]
+}
+
+@test "dempack shots: --angle 60deg gives v = speed (cos 60, 0, -sin 60)" {
+	dempack shots --grid 1 --passes 1 --angle 60deg --speed 10 --seed 1 > "$T/s" 2>/dev/null
+	awk '!/^#/ { d = $6 - 5; e = $8 + 8.660254037844386; exit !(d * d < 1e-24 && e * e < 1e-24 && $7 == 0) }' "$T/s"
+}
+
+@test "dempack shots random: --coverage 200 reaches the target (98 % at 100 %, twice the impacts)" {
+	run --separate-stderr dempack shots --pattern random --coverage 200 --dimple-radius 0.4mm --seed 1
+	[ "$status" -eq 0 ]
+	echo "$output" > "$T/s"
+	line=$(grep '^# coverage ' "$T/s")
+	echo "$line"
+	[[ $line =~ ^#\ coverage\ target=200\ covered=([0-9.]+)\ impacts_100=([0-9]+)\ dimple_radius=0.0004$ ]]
+	covered=${BASH_REMATCH[1]} n100=${BASH_REMATCH[2]}
+	awk -v c="$covered" 'BEGIN { exit !(c >= 0.995) }'
+	[ "$(rows "$T/s")" -eq $((2 * n100)) ]
+	[[ ${stderr_lines[-1]} == "dempack: cost: "*" shots=$((2 * n100)) passes="*" coverage=0.99"* ]]
+	# and 100 %: at least 98 % covered with n100 impacts
+	dempack shots --pattern random --coverage 100 --dimple-radius 0.4mm --seed 1 > "$T/h" 2>/dev/null
+	[ "$(rows "$T/h")" -eq "$n100" ]
+	grep -qE '^# coverage target=100 covered=0\.98[0-9]* ' "$T/h"
+}
+
+@test "dempack shots random: the same seed gives the same stream, another seed another" {
+	dempack shots --pattern random --passes 5 --seed 3 > "$T/a" 2>/dev/null
+	dempack shots --pattern random --passes 5 --seed 3 > "$T/b" 2>/dev/null
+	dempack shots --pattern random --passes 5 --seed 4 > "$T/c" 2>/dev/null
+	[ "$(rows "$T/a")" -eq 40 ]
+	cmp "$T/a" "$T/b"
+	! cmp -s <(grep -v '^#' "$T/a") <(grep -v '^#' "$T/c")
+}
+
+@test "dempack shots random: a coverage without --dimple-radius is an error naming the key, no output" {
+	run --separate-stderr dempack shots --pattern random --coverage 100 --seed 1
+	[ "$status" -eq 1 ]
+	[ -z "$output" ]
+	[[ ${stderr_lines[0]} == "dempack: pack.dimple_radius: required with pack.coverage"* ]]
+}
+
+@test "dempack shots random: a pass that cannot hold the shots is an error, no output" {
+	run --separate-stderr dempack shots --pattern random --per-pass 16 --passes 2 --seed 1
+	[ "$status" -eq 1 ]
+	[ -z "$output" ]
+	[[ ${stderr_lines[0]} == "dempack: random pattern: cannot place per_pass 16 shots"* ]]
+}
+
+@test "dempack shots: options of other methods and patterns are usage errors, and vice versa" {
+	usage_error dempack shots -n 5
+	[[ ${stderr_lines[0]} == *"--number: not an option of method shots"* ]]
+	usage_error dempack shots --law urd
+	usage_error dempack random --grid 4
+	[[ ${stderr_lines[0]} == *"--grid: not an option of method random"* ]]
+	usage_error dempack front --coverage 100
+	usage_error dempack shots --coverage 100 --dimple-radius 1mm
+	[[ ${stderr_lines[0]} == *"--coverage: pack.coverage: not read with pack.pattern grid"* ]]
+	usage_error dempack shots --pattern random --grid 3
+	usage_error dempack shots --pattern random --coverage 100 --passes 3 --dimple-radius 1mm
+	usage_error dempack shots --angle 100deg
+	usage_error dempack shots --pattern hexagon
+	usage_error dempack shots --area 5.6mm
+}
+
+@test "dempack shots --dump-scene: the pack and shot sections, every default; it loads back" {
+	run --separate-stderr dempack shots --dump-scene
+	[ "$status" -eq 0 ]
+	expected='pack:
+  method: shots
+  pattern: grid
+  area: [0.0056 m, 0.0056 m]
+  center: [0 m, 0 m]
+  grid: 4
+  passes: 32
+shot:
+  radius: 0.0007 m
+  law: mono
+  lambda: 1
+  speed: 46.5 m/s
+  speed_scatter: 0
+  angle: 1.5707963267948966 rad
+  azimuth: 0 rad'
+	[ "$output" = "$expected" ]
+	dempack shots --pattern random --coverage 150 --dimple-radius 0.4mm --dump-scene > "$T/s.yaml"
+	dempack shots -s "$T/s.yaml" --seed 2 > "$T/a" 2>/dev/null
+	dempack shots --pattern random --coverage 150 --dimple-radius 0.4mm --seed 2 > "$T/b" 2>/dev/null
+	cmp <(grep -v '^# prog' "$T/a") <(grep -v '^# prog' "$T/b")
+}
