@@ -48,16 +48,11 @@ static const char epilogue[] =
 	"  demdetect --shape 1e-9 -c packing.txt     # count overlapping disks\n"
 	"\nSee demdetect(1), dem-scene(5) and dem-streams(5).\n";
 
-struct override {
-	const char *key, *text, *origin;
-};
-
 struct cmdline {
-	const char *input, *scene, *output;
-	int binary, gzip, dump, verbose, quiet, count;
+	dem_common_t com;
+	const char *input;
+	int count;
 	unsigned long repeat;   /* detections to time (1: just the one) */
-	struct override *ov;    /* scene keys set by options, in order */
-	int nov;
 };
 
 static int looks_numeric(const char *s)
@@ -70,70 +65,44 @@ static int looks_numeric(const char *s)
 static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 {
 	dem_cli_t c;
-	int k, done = -1;
-	unsigned long seed;
+	dem_common_t *m = &cl->com;
+	int k, done;
 
 	memset(cl, 0, sizeof *cl);
 	cl->repeat = 1;
-	/* each argument sets at most two keys (--shape TOL) */
-	cl->ov = malloc(2 * (size_t)argc * sizeof *cl->ov);
-	if (!cl->ov || dem_cli_init(&c, PROG, options) != 0)
+	if (dem_common_init(m, argc) || dem_cli_init(&c, PROG, options, usage, purpose, epilogue))
 		return DEM_EIO;
 	while ((k = dem_cli_next(&c, argc, argv)) != -1) {
-		struct override o = {NULL, optarg, NULL};
+		if (dem_cli_common(&c, k, optarg, m))
+			continue;       /* --seed and --accuracy: no use in detection */
 		switch (k) {
-		case 's': cl->scene = optarg; break;
-		case 'o': cl->output = optarg; break;
-		case 'b': cl->binary = 1; break;
-		case 'z': cl->gzip = 1; break;
-		case 'v': cl->verbose++; break;
-		case 'q': cl->quiet = 1; break;
 		case 'c': cl->count = 1; break;
 		case OPT_REPEAT:
 			dem_cli_ulong(&c, "--repeat", optarg, 1, 1000000, &cl->repeat);
 			break;
-		case DEM_OPT_SEED:      /* accepted for a common interface; unused */
-			dem_cli_ulong(&c, "--seed", optarg, 0, 0xffffffffUL, &seed);
-			break;
-		case DEM_OPT_ACCURACY:  /* detection is exact: no knob */
-			if (strcmp(optarg, "coarse") && strcmp(optarg, "normal") && strcmp(optarg, "fine"))
-				dem_cli_error(&c, "--accuracy: '%s': expected coarse, normal or fine", optarg);
-			break;
-		case DEM_OPT_DUMP_SCENE: cl->dump = 1; break;
-		case 'h':
-			dem_cli_help(&c, stdout, usage, purpose, epilogue);
-			done = 0;
-			break;
-		case DEM_OPT_VERSION:
-			dem_cli_version(&c);
-			done = 0;
-			break;
-		case 'a': o.key = "detect.algorithm"; o.origin = "--algorithm"; break;
+		case 'a': dem_common_override(m, "detect.algorithm", optarg, "--algorithm"); break;
 		case OPT_SHAPE:
-			cl->ov[cl->nov++] = (struct override){"detect.shape", "true", "--shape"};
+			dem_common_override(m, "detect.shape", "true", "--shape");
 			/* "--shape 1e-9" as well as "--shape=1e-9" */
 			if (!optarg && optind < argc && looks_numeric(argv[optind]))
-				o.text = optarg = argv[optind++];
-			if (optarg) {
-				o.key = "detect.shape_tol";
-				o.origin = "--shape";
-			}
+				optarg = argv[optind++];
+			if (optarg)
+				dem_common_override(m, "detect.shape_tol", optarg, "--shape");
 			break;
-		case OPT_CELL: o.key = "detect.cell_factor"; o.origin = "--cell"; break;
-		case OPT_CELL_SIZE: o.key = "detect.cell"; o.origin = "--cell-size"; break;
-		case OPT_BUFFER: o.key = "detect.buffer"; o.origin = "--buffer"; break;
-		case OPT_PERIODIC: o.key = "detect.periodic"; o.origin = "--periodic"; break;
+		case OPT_CELL: dem_common_override(m, "detect.cell_factor", optarg, "--cell"); break;
+		case OPT_CELL_SIZE: dem_common_override(m, "detect.cell", optarg, "--cell-size"); break;
+		case OPT_BUFFER: dem_common_override(m, "detect.buffer", optarg, "--buffer"); break;
+		case OPT_PERIODIC: dem_common_override(m, "detect.periodic", optarg, "--periodic"); break;
 		default: break;
 		}
-		if (o.key)
-			cl->ov[cl->nov++] = o;
 	}
+	done = c.done;
 	if (done < 0) {
 		if (optind < argc)
 			cl->input = argv[optind++];
 		if (optind < argc)
 			dem_cli_error(&c, "unexpected argument '%s' (one input at most)", argv[optind]);
-		if (cl->count && (cl->output || cl->binary || cl->gzip))
+		if (cl->count && (m->output || m->binary || m->gzip))
 			dem_cli_error(&c, "-c prints a number: -o, -b and -z do not apply");
 		if (dem_cli_finish(&c))
 			done = DEM_EUSAGE;
@@ -364,8 +333,8 @@ static int write_pairs(const struct cmdline *cl, dem_reader_t *rd, int argc,
 		dem_header_free(&h);
 		return dem_error_nomem(e, "header");
 	}
-	int flags = (cl->binary ? DEM_STREAM_BINARY : 0) | (cl->gzip ? DEM_STREAM_GZIP : 0);
-	rc = dem_writer_open(&w, cl->output, &h, flags, e);
+	int flags = (cl->com.binary ? DEM_STREAM_BINARY : 0) | (cl->com.gzip ? DEM_STREAM_GZIP : 0);
+	rc = dem_writer_open(&w, cl->com.output, &h, flags, e);
 	dem_header_free(&h);
 	if (rc)
 		return rc;
@@ -434,17 +403,16 @@ int main(int argc, char **argv)
 	memcpy(args, argv, ((size_t)argc + 1) * sizeof *args);
 	if ((rc = parse_cmdline(argc, argv, &cl)) >= 0) {
 		free(args);
-		free(cl.ov);
+		dem_common_free(&cl.com);
 		return rc;
 	}
-	if ((rc = dem_scene_load(&scene, cl.scene, &e)))
+	if ((rc = dem_scene_load(&scene, cl.com.scene, &e)))
 		goto fail;
-	for (int i = 0; i < cl.nov; i++)
-		if ((rc = dem_scene_override(scene, cl.ov[i].key, cl.ov[i].text, cl.ov[i].origin, &e)))
-			goto fail;
+	if ((rc = dem_scene_override_all(scene, cl.com.ov, cl.com.nov, &e)))
+		goto fail;
 	if ((rc = read_scene(scene, &set, &e)))
 		goto fail;
-	if (cl.dump) {
+	if (cl.com.dump) {
 		dem_scene_dump(scene, stdout);
 		goto done;
 	}
@@ -500,7 +468,7 @@ int main(int argc, char **argv)
 	dem_cost_count(&cost, "checks", (double)stats.checks);
 	if (stats.ghosts)
 		dem_cost_count(&cost, "images", (double)stats.ghosts);
-	if (cl.verbose)
+	if (cl.com.verbose)
 		fprintf(stderr, "%s: %s, %zu objects, cell %g x %g x %g\n", PROG,
 			dem_detect_algo_name(set.opts.algo), ob.n, stats.cell[0],
 			stats.cell[1], stats.cell[2]);
@@ -511,17 +479,17 @@ done:
 	dem_reader_close(rd);
 	dem_scene_free(scene);
 	free(args);
-	free(cl.ov);
-	if (!cl.output && (rc = dem_cli_close_stdout(PROG)))
+	dem_common_free(&cl.com);
+	if (!cl.com.output && (rc = dem_cli_close_stdout(PROG)))
 		return rc;
-	if (!cl.dump)
+	if (!cl.com.dump)
 		dem_cost_print(&cost, PROG, stderr);
 	return 0;
 fail:
 	fprintf(stderr, "%s: %s\n", PROG, e.msg);
 	if (rc == DEM_EUSAGE)
 		fprintf(stderr, "Try '%s --help' for more information.\n", PROG);
-	free(cl.ov);
+	dem_common_free(&cl.com);
 	dem_detect_ws_free(set.opts.ws);
 	dem_pairs_free(&pairs);
 	objects_free(&ob);

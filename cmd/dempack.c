@@ -92,154 +92,78 @@ static const char epilogue[] =
 	"  dempack shots --pattern random --coverage 200 --dimple-radius 0.4mm --seed 1\n"
 	"\nSee dempack(1), dem-scene(5) and dem-streams(5).\n";
 
-struct override {
-	const char *key, *text, *origin;
-};
-
 struct cmdline {
+	dem_common_t com;
 	const char *method;
-	const char *scene, *output;
-	int binary, gzip, have_seed, dump, verbose, quiet;
-	unsigned long seed;
-	struct override *ov;    /* scene keys set by options, in order */
-	int nov;
-	char *aspect;           /* --aspect rewritten as a scene vector */
-	char *domain;           /* --domain likewise */
-	char *area;             /* --area likewise */
-	unsigned long given;    /* method options given: bit i of method_opts */
 };
 
-static void cmdline_free(struct cmdline *cl)
-{
-	free(cl->ov);
-	free(cl->aspect);
-	free(cl->domain);
-	free(cl->area);
-}
-
-/* "a:b:c" -> "a, b, c", which the scene reads as a vector; NULL without
- * memory. */
-static char *colon_vector(char **buf, const char *text)
-{
-	free(*buf);
-	if (!(*buf = strdup(text)))
-		return NULL;
-	for (char *p = *buf; *p; p++)
-		if (*p == ':')
-			*p = ',';
-	return *buf;
-}
-
-/* The method options and the methods that read them (a bit per method);
- * given to another method they are usage errors.  Shots take their radius
- * law from the scene's shot: section, so --law, --rmin and --lambda (the
- * pack.radius keys) are not theirs. */
+/* The method options: the scene key each sets, and the methods that read
+ * it (a bit per method); given to another method they are usage errors.
+ * Shots take their radius law from the scene's shot: section, so --law,
+ * --rmin and --lambda (the pack.radius keys) are not theirs. */
 #define M_RANDOM (1u << METHOD_RANDOM)
 #define M_FRONT (1u << METHOD_FRONT)
 #define M_SHOTS (1u << METHOD_SHOTS)
-static const struct {
+static const struct method_opt {
 	int key;
 	unsigned methods;
-	const char *name;
+	const char *name, *scene_key;
+	int vector;             /* typed "a:b:c" for a vector key */
 } method_opts[] = {
-	{OPT_DIM, M_RANDOM, "--dim"}, {'n', M_RANDOM, "--number"},
-	{OPT_DENSITY, M_RANDOM, "--density"}, {OPT_ASPECT, M_RANDOM, "--aspect"},
-	{OPT_LAW, M_RANDOM | M_FRONT, "--law"}, {OPT_RMIN, M_RANDOM | M_FRONT, "--rmin"},
-	{OPT_LAMBDA, M_RANDOM | M_FRONT, "--lambda"},
-	{OPT_FORM, M_FRONT, "--form"}, {OPT_DOMAIN, M_FRONT, "--domain"},
-	{OPT_CHECK_LIMIT, M_FRONT, "--check-limit"}, {OPT_GRAVITY, M_FRONT, "--gravity"},
-	{OPT_PATTERN, M_SHOTS, "--pattern"}, {OPT_AREA, M_SHOTS, "--area"},
-	{OPT_GRID, M_SHOTS, "--grid"}, {OPT_PASSES, M_SHOTS, "--passes"},
-	{OPT_COVERAGE, M_SHOTS, "--coverage"}, {OPT_PER_PASS, M_SHOTS, "--per-pass"},
-	{OPT_SEPARATION, M_SHOTS, "--separation"}, {OPT_DIMPLE, M_SHOTS, "--dimple-radius"},
-	{OPT_SPEED, M_SHOTS, "--speed"}, {OPT_ANGLE, M_SHOTS, "--angle"},
-	{OPT_SHOT_RADIUS, M_SHOTS, "--shot-radius"},
+	{OPT_DIM, M_RANDOM, "--dim", "pack.dim", 0},
+	{'n', M_RANDOM, "--number", "pack.n", 0},
+	{OPT_DENSITY, M_RANDOM, "--density", "pack.density", 0},
+	{OPT_ASPECT, M_RANDOM, "--aspect", "pack.aspect", 1},
+	{OPT_LAW, M_RANDOM | M_FRONT, "--law", "pack.radius.law", 0},
+	{OPT_RMIN, M_RANDOM | M_FRONT, "--rmin", "pack.radius.min", 0},
+	{OPT_LAMBDA, M_RANDOM | M_FRONT, "--lambda", "pack.radius.lambda", 0},
+	{OPT_FORM, M_FRONT, "--form", "pack.form", 0},
+	{OPT_DOMAIN, M_FRONT, "--domain", "pack.domain", 1},
+	{OPT_CHECK_LIMIT, M_FRONT, "--check-limit", "pack.check_limit", 0},
+	{OPT_GRAVITY, M_FRONT, "--gravity", "pack.gravity", 0},
+	{OPT_PATTERN, M_SHOTS, "--pattern", "pack.pattern", 0},
+	{OPT_AREA, M_SHOTS, "--area", "pack.area", 1},
+	{OPT_GRID, M_SHOTS, "--grid", "pack.grid", 0},
+	{OPT_PASSES, M_SHOTS, "--passes", "pack.passes", 0},
+	{OPT_COVERAGE, M_SHOTS, "--coverage", "pack.coverage", 0},
+	{OPT_PER_PASS, M_SHOTS, "--per-pass", "pack.per_pass", 0},
+	{OPT_SEPARATION, M_SHOTS, "--separation", "pack.separation", 0},
+	{OPT_DIMPLE, M_SHOTS, "--dimple-radius", "pack.dimple_radius", 0},
+	{OPT_SPEED, M_SHOTS, "--speed", "shot.speed", 0},
+	{OPT_ANGLE, M_SHOTS, "--angle", "shot.angle", 0},
+	{OPT_SHOT_RADIUS, M_SHOTS, "--shot-radius", "shot.radius", 0},
 };
 #define NMETHOD_OPTS (sizeof method_opts / sizeof method_opts[0])
-_Static_assert(NMETHOD_OPTS <= 32, "cmdline.given holds a bit per method option");
-
-static void add_override(struct cmdline *cl, const char *key, const char *text,
-			 const char *origin)
-{
-	cl->ov[cl->nov++] = (struct override){key, text, origin};
-}
+_Static_assert(NMETHOD_OPTS <= 32, "a bit per method option");
 
 /* Returns -1 to go on, or the exit code (help, version, usage error). */
 static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 {
 	dem_cli_t c;
-	int k, done = -1;
+	dem_common_t *com = &cl->com;
+	unsigned long given = 0;        /* bit i: method_opts[i] was typed */
+	int k, done;
 
 	memset(cl, 0, sizeof *cl);
-	cl->ov = malloc(((size_t)argc + 1) * sizeof *cl->ov);   /* options and the method */
-	if (!cl->ov || dem_cli_init(&c, PROG, options) != 0)
+	if (dem_common_init(com, argc) || dem_cli_init(&c, PROG, options, usage, purpose, epilogue))
 		return DEM_EIO;
 	while ((k = dem_cli_next(&c, argc, argv)) != -1) {
-		switch (k) {
-		case 's': cl->scene = optarg; break;
-		case 'o': cl->output = optarg; break;
-		case 'b': cl->binary = 1; break;
-		case 'z': cl->gzip = 1; break;
-		case 'v': cl->verbose++; break;
-		case 'q': cl->quiet = 1; break;
-		case DEM_OPT_SEED:
-			if (dem_cli_ulong(&c, "--seed", optarg, 0, 0xffffffffUL, &cl->seed) == 0)
-				cl->have_seed = 1;
-			break;
-		case DEM_OPT_ACCURACY:
-			if (strcmp(optarg, "coarse") && strcmp(optarg, "normal") && strcmp(optarg, "fine"))
-				dem_cli_error(&c, "--accuracy: '%s': expected coarse, normal or fine", optarg);
-			break;      /* random sets have no accuracy knob */
-		case DEM_OPT_DUMP_SCENE: cl->dump = 1; break;
-		case 'h':
-			dem_cli_help(&c, stdout, usage, purpose, epilogue);
-			done = 0;
-			break;
-		case DEM_OPT_VERSION:
-			dem_cli_version(&c);
-			done = 0;
-			break;
-		case OPT_DIM: add_override(cl, "pack.dim", optarg, "--dim"); break;
-		case 'n': add_override(cl, "pack.n", optarg, "--number"); break;
-		case OPT_DENSITY: add_override(cl, "pack.density", optarg, "--density"); break;
-		case OPT_LAW: add_override(cl, "pack.radius.law", optarg, "--law"); break;
-		case OPT_RMIN: add_override(cl, "pack.radius.min", optarg, "--rmin"); break;
-		case OPT_LAMBDA: add_override(cl, "pack.radius.lambda", optarg, "--lambda"); break;
-		case OPT_ASPECT:
-			if (!colon_vector(&cl->aspect, optarg))
+		if (dem_cli_common(&c, k, optarg, com))
+			continue;       /* --accuracy: packings have no knob yet */
+		for (size_t i = 0; i < NMETHOD_OPTS; i++) {
+			const struct method_opt *o = &method_opts[i];
+			if (k != o->key)
+				continue;
+			given |= 1UL << i;
+			if (!optarg)    /* a flag */
+				dem_common_override(com, o->scene_key, "true", o->name);
+			else if (!o->vector)
+				dem_common_override(com, o->scene_key, optarg, o->name);
+			else if (dem_common_override_vector(com, o->scene_key, optarg, o->name))
 				return DEM_EIO;
-			add_override(cl, "pack.aspect", cl->aspect, "--aspect");
-			break;
-		case OPT_FORM: add_override(cl, "pack.form", optarg, "--form"); break;
-		case OPT_DOMAIN:
-			if (!colon_vector(&cl->domain, optarg))
-				return DEM_EIO;
-			add_override(cl, "pack.domain", cl->domain, "--domain");
-			break;
-		case OPT_CHECK_LIMIT: add_override(cl, "pack.check_limit", optarg, "--check-limit"); break;
-		case OPT_GRAVITY: add_override(cl, "pack.gravity", "true", "--gravity"); break;
-		case OPT_PATTERN: add_override(cl, "pack.pattern", optarg, "--pattern"); break;
-		case OPT_AREA:
-			if (!colon_vector(&cl->area, optarg))
-				return DEM_EIO;
-			add_override(cl, "pack.area", cl->area, "--area");
-			break;
-		case OPT_GRID: add_override(cl, "pack.grid", optarg, "--grid"); break;
-		case OPT_PASSES: add_override(cl, "pack.passes", optarg, "--passes"); break;
-		case OPT_COVERAGE: add_override(cl, "pack.coverage", optarg, "--coverage"); break;
-		case OPT_PER_PASS: add_override(cl, "pack.per_pass", optarg, "--per-pass"); break;
-		case OPT_SEPARATION: add_override(cl, "pack.separation", optarg, "--separation"); break;
-		case OPT_DIMPLE: add_override(cl, "pack.dimple_radius", optarg, "--dimple-radius"); break;
-		case OPT_SPEED: add_override(cl, "shot.speed", optarg, "--speed"); break;
-		case OPT_ANGLE: add_override(cl, "shot.angle", optarg, "--angle"); break;
-		case OPT_SHOT_RADIUS: add_override(cl, "shot.radius", optarg, "--shot-radius"); break;
-		default:
-			break;
 		}
-		for (size_t i = 0; i < NMETHOD_OPTS; i++)
-			if (k == method_opts[i].key)
-				cl->given |= 1UL << i;
 	}
+	done = c.done;
 	if (done < 0) {
 		if (optind < argc)
 			cl->method = argv[optind++];
@@ -247,15 +171,15 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 		for (int i = 0; cl->method && methods[i]; i++)
 			if (strcmp(cl->method, methods[i]) == 0)
 				m = i;
-		if (!cl->method && !cl->dump)
+		if (!cl->method && !com->dump)
 			dem_cli_error(&c, "no method given (random, front or shots)");
 		else if (cl->method && m < 0)
 			dem_cli_error(&c, "unknown method '%s' (this version has: random, front, shots)", cl->method);
 		for (size_t i = 0; m >= 0 && i < NMETHOD_OPTS; i++)
-			if ((cl->given >> i & 1) && !(method_opts[i].methods >> m & 1))
+			if ((given >> i & 1) && !(method_opts[i].methods >> m & 1))
 				dem_cli_error(&c, "%s: not an option of method %s", method_opts[i].name, methods[m]);
 		if (m >= 0)     /* the method typed wins over the scene's */
-			add_override(cl, "pack.method", cl->method, cl->method);
+			dem_common_override(com, "pack.method", cl->method, cl->method);
 		if (optind < argc)
 			dem_cli_error(&c, "unexpected argument '%s'", argv[optind]);
 		if (dem_cli_finish(&c))
@@ -482,11 +406,11 @@ static int write_front(const dem_front_spec_t *fp, const struct cmdline *cl,
 	dem_fmt_double(buf[3], fp->hi[1]);
 	dem_header_set(h, "domain", "%s %s %s %s", buf[0], buf[1], buf[2], buf[3]);
 
-	gsl_rng *rng = dem_rng_derive(cl->seed, 0);
+	gsl_rng *rng = dem_rng_derive(cl->com.seed, 0);
 	if (!rng)
 		return dem_error_nomem(e, "random generator");
-	struct front_out o = {NULL, h, &st, cl->output,
-			      (cl->binary ? DEM_STREAM_BINARY : 0) | (cl->gzip ? DEM_STREAM_GZIP : 0), e, 0};
+	struct front_out o = {NULL, h, &st, cl->com.output,
+			      (cl->com.binary ? DEM_STREAM_BINARY : 0) | (cl->com.gzip ? DEM_STREAM_GZIP : 0), e, 0};
 	double t0 = dem_wall();
 	rc = dem_pack_front(fp, rng, front_emit, &o, &st, e);
 	gsl_rng_free(rng);
@@ -532,7 +456,7 @@ static int write_shots(const dem_shots_spec_t *sp, const struct cmdline *cl,
 	int rc;
 
 	double t0 = dem_wall();
-	if ((rc = dem_shots_plan(sp, cl->seed, &plan, e)))
+	if ((rc = dem_shots_plan(sp, cl->com.seed, &plan, e)))
 		return rc;
 	if (plan.passes > 0xffffffffUL)
 		return dem_error_set(e, DEM_EINPUT, "%zu passes: more than a u32 column holds", plan.passes);
@@ -541,8 +465,8 @@ static int write_shots(const dem_shots_spec_t *sp, const struct cmdline *cl,
 	dem_header_add_col(&h, "pass", DEM_U32, "-");
 	for (int i = 0; i < 7; i++)
 		dem_header_add_col(&h, cols[i], DEM_F64, units[i]);
-	dem_header_add_provenance(&h, PROG, argc, args, 1, cl->seed);
-	dem_header_add(&h, "seed", "%lu", cl->seed);
+	dem_header_add_provenance(&h, PROG, argc, args, 1, cl->com.seed);
+	dem_header_add(&h, "seed", "%lu", cl->com.seed);
 	if (sp->pattern == DEM_SHOTS_GRID) {
 		dem_header_add(&h, "method", "shots pattern=grid grid=%d passes=%zu per_pass=%zu",
 			       sp->grid, plan.passes, plan.per_pass);
@@ -580,11 +504,11 @@ static int write_shots(const dem_shots_spec_t *sp, const struct cmdline *cl,
 		dem_header_add(&h, "coverage", "%s", cov);
 	}
 
-	int flags = (cl->binary ? DEM_STREAM_BINARY : 0) | (cl->gzip ? DEM_STREAM_GZIP : 0);
-	if ((rc = dem_writer_open(&w, cl->output, &h, flags, e)))
+	int flags = (cl->com.binary ? DEM_STREAM_BINARY : 0) | (cl->com.gzip ? DEM_STREAM_GZIP : 0);
+	if ((rc = dem_writer_open(&w, cl->com.output, &h, flags, e)))
 		goto out;
 	struct emit_ctx ctx = {w, e, 0};
-	if ((rc = dem_pack_shots(sp, cl->seed, &plan, shots_emit, &ctx, e)))
+	if ((rc = dem_pack_shots(sp, cl->com.seed, &plan, shots_emit, &ctx, e)))
 		goto out;
 	rc = dem_writer_close(w, e);
 	w = NULL;
@@ -622,33 +546,32 @@ int main(int argc, char **argv)
 	memcpy(args, argv, ((size_t)argc + 1) * sizeof *args);
 	if ((rc = parse_cmdline(argc, argv, &cl)) >= 0) {
 		free(args);
-		cmdline_free(&cl);
+		dem_common_free(&cl.com);
 		return rc;
 	}
-	if ((rc = dem_scene_load(&scene, cl.scene, &e)))
+	if ((rc = dem_scene_load(&scene, cl.com.scene, &e)))
 		goto fail;
-	for (int i = 0; i < cl.nov; i++)
-		if ((rc = dem_scene_override(scene, cl.ov[i].key, cl.ov[i].text, cl.ov[i].origin, &e)))
-			goto fail;
+	if ((rc = dem_scene_override_all(scene, cl.com.ov, cl.com.nov, &e)))
+		goto fail;
 	if ((rc = read_scene(scene, &method, &sp, &fp, &hp, &e)))
 		goto fail;
-	if (cl.dump) {
+	if (cl.com.dump) {
 		dem_scene_dump(scene, stdout);
 		dem_scene_free(scene);
 		free(args);
-		cmdline_free(&cl);
+		dem_common_free(&cl.com);
 		return dem_cli_close_stdout(PROG);
 	}
 
-	gsl_rng *probe = dem_rng_new(&cl.have_seed, &cl.seed);  /* draws a seed if none */
+	gsl_rng *probe = dem_rng_new(&cl.com.have_seed, &cl.com.seed);  /* draws a seed if none */
 	gsl_rng_free(probe);
 	if (method == METHOD_SHOTS) {
 		if ((rc = write_shots(&hp, &cl, argc, args, &cost, &e)))
 			goto fail;
 		dem_scene_free(scene);
 		free(args);
-		cmdline_free(&cl);
-		if (!cl.output && (rc = dem_cli_close_stdout(PROG)))
+		dem_common_free(&cl.com);
+		if (!cl.com.output && (rc = dem_cli_close_stdout(PROG)))
 			return rc;
 		dem_cost_print(&cost, PROG, stderr);
 		return 0;
@@ -662,8 +585,8 @@ int main(int argc, char **argv)
 	for (int d = 0; d < dim; d++)
 		dem_header_add_col(&h, axes[d], DEM_F64, "m");
 	dem_header_add_col(&h, "r", DEM_F64, "m");
-	dem_header_add_provenance(&h, PROG, argc, args, 1, cl.seed);
-	dem_header_add(&h, "seed", "%lu", cl.seed);
+	dem_header_add_provenance(&h, PROG, argc, args, 1, cl.com.seed);
+	dem_header_add(&h, "seed", "%lu", cl.com.seed);
 	if (method == METHOD_FRONT) {
 		if ((rc = write_front(&fp, &cl, &h, &cost, &e)))
 			goto fail_h;
@@ -677,7 +600,7 @@ int main(int argc, char **argv)
 		       dem_radius_names[sp.law.kind], rmin, lambda, rho);
 
 	double hi[3] = {0, 0, 0};
-	if ((rc = dem_pack_random_domain(&sp, cl.seed, hi, &e)))
+	if ((rc = dem_pack_random_domain(&sp, cl.com.seed, hi, &e)))
 		goto fail_h;
 	{
 		char buf[160];
@@ -690,12 +613,12 @@ int main(int argc, char **argv)
 		}
 		dem_header_set(&h, "domain", "%s", buf);
 	}
-	int flags = (cl.binary ? DEM_STREAM_BINARY : 0) | (cl.gzip ? DEM_STREAM_GZIP : 0);
-	if ((rc = dem_writer_open(&w, cl.output, &h, flags, &e)))
+	int flags = (cl.com.binary ? DEM_STREAM_BINARY : 0) | (cl.com.gzip ? DEM_STREAM_GZIP : 0);
+	if ((rc = dem_writer_open(&w, cl.com.output, &h, flags, &e)))
 		goto fail_h;
 	double t0 = dem_wall();
 	struct emit_ctx ctx = {w, &e, sp.dim};
-	if ((rc = dem_pack_random(&sp, cl.seed, hi, emit, &ctx, &e)))
+	if ((rc = dem_pack_random(&sp, cl.com.seed, hi, emit, &ctx, &e)))
 		goto fail_h;
 	if ((rc = dem_writer_close(w, &e))) {
 		w = NULL;
@@ -708,8 +631,8 @@ done:
 	dem_header_free(&h);
 	dem_scene_free(scene);
 	free(args);
-	cmdline_free(&cl);
-	if (!cl.output && (rc = dem_cli_close_stdout(PROG)))
+	dem_common_free(&cl.com);
+	if (!cl.com.output && (rc = dem_cli_close_stdout(PROG)))
 		return rc;
 	dem_cost_print(&cost, PROG, stderr);
 	return 0;
@@ -722,6 +645,6 @@ fail:
 	dem_writer_abort(w);
 	dem_scene_free(scene);
 	free(args);
-	cmdline_free(&cl);
+	dem_common_free(&cl.com);
 	return rc;
 }

@@ -8,7 +8,8 @@
 
 #include "core/error.h"
 
-int dem_cli_init(dem_cli_t *c, const char *prog, const dem_opt_t *opts)
+int dem_cli_init(dem_cli_t *c, const char *prog, const dem_opt_t *opts,
+		 const char *usage, const char *purpose, const char *epilogue)
 {
 	size_t n = 0;
 	while (opts[n].name)
@@ -16,6 +17,10 @@ int dem_cli_init(dem_cli_t *c, const char *prog, const dem_opt_t *opts)
 	memset(c, 0, sizeof *c);
 	c->prog = prog;
 	c->opts = opts;
+	c->usage = usage;
+	c->purpose = purpose;
+	c->epilogue = epilogue;
+	c->done = -1;
 	c->lopts = calloc(n + 1, sizeof *c->lopts);
 	c->sopts = malloc(3 * n + 2);
 	if (!c->lopts || !c->sopts) {
@@ -118,10 +123,9 @@ int dem_cli_ulong(dem_cli_t *c, const char *opt, const char *text,
 	return 0;
 }
 
-void dem_cli_help(const dem_cli_t *c, FILE *f, const char *usage,
-		  const char *purpose, const char *epilogue)
+void dem_cli_help(const dem_cli_t *c, FILE *f)
 {
-	fprintf(f, "%s%s\n\nOptions:\n", usage, purpose);
+	fprintf(f, "%s%s\n\nOptions:\n", c->usage, c->purpose);
 	for (const dem_opt_t *o = c->opts; o->name; o++) {
 		char left[64];
 		int n = 0;
@@ -133,8 +137,92 @@ void dem_cli_help(const dem_cli_t *c, FILE *f, const char *usage,
 			snprintf(left + n, sizeof left - (size_t)n, o->arg[0] == '[' ? "%s" : " %s", o->arg);
 		fprintf(f, "%-28s %s\n", left, o->help);
 	}
-	if (epilogue)
-		fprintf(f, "\n%s", epilogue);
+	if (c->epilogue)
+		fprintf(f, "\n%s", c->epilogue);
+}
+
+int dem_common_init(dem_common_t *m, int argc)
+{
+	memset(m, 0, sizeof *m);
+	m->accuracy = DEM_ACCURACY_NORMAL;
+	/* an argument sets at most two keys (e.g. --shape TOL), plus the verb */
+	m->cap = 2 * argc + 2;
+	m->ov = malloc((size_t)m->cap * sizeof *m->ov);
+	m->owned = malloc((size_t)m->cap * sizeof *m->owned);
+	return m->ov && m->owned ? 0 : -1;
+}
+
+void dem_common_free(dem_common_t *m)
+{
+	for (int i = 0; i < m->nowned; i++)
+		free(m->owned[i]);
+	free(m->owned);
+	free(m->ov);
+	m->owned = NULL;
+	m->ov = NULL;
+	m->nowned = m->nov = m->cap = 0;
+}
+
+void dem_common_override(dem_common_t *m, const char *key, const char *text,
+			 const char *origin)
+{
+	if (m->nov < m->cap)
+		m->ov[m->nov++] = (dem_override_t){key, text, origin};
+}
+
+int dem_common_override_vector(dem_common_t *m, const char *key,
+			       const char *text, const char *origin)
+{
+	char *t = strdup(text);
+	if (!t || m->nowned == m->cap) {
+		free(t);
+		return -1;
+	}
+	m->owned[m->nowned++] = t;
+	for (char *p = t; *p; p++)
+		if (*p == ':')
+			*p = ',';
+	dem_common_override(m, key, t, origin);
+	return 0;
+}
+
+int dem_cli_common(dem_cli_t *c, int key, const char *arg, dem_common_t *m)
+{
+	static const char *const levels[] = {"coarse", "normal", "fine"};
+
+	switch (key) {
+	case 's': m->scene = arg; break;
+	case 'o': m->output = arg; break;
+	case 'b': m->binary = 1; break;
+	case 'z': m->gzip = 1; break;
+	case 'v': m->verbose++; break;
+	case 'q': m->quiet = 1; break;
+	case DEM_OPT_DUMP_SCENE: m->dump = 1; break;
+	case DEM_OPT_SEED:
+		if (dem_cli_ulong(c, "--seed", arg, 0, 0xffffffffUL, &m->seed) == 0)
+			m->have_seed = 1;
+		break;
+	case DEM_OPT_ACCURACY:
+		for (m->accuracy = 2; m->accuracy >= 0; m->accuracy--)
+			if (strcmp(arg, levels[m->accuracy]) == 0)
+				break;
+		if (m->accuracy < 0) {
+			dem_cli_error(c, "--accuracy: '%s': expected coarse, normal or fine", arg);
+			m->accuracy = DEM_ACCURACY_NORMAL;
+		}
+		break;
+	case 'h':
+		dem_cli_help(c, stdout);
+		c->done = 0;
+		break;
+	case DEM_OPT_VERSION:
+		dem_cli_version(c);
+		c->done = 0;
+		break;
+	default:
+		return 0;
+	}
+	return 1;
 }
 
 int dem_cli_finish(const dem_cli_t *c)

@@ -43,10 +43,33 @@ typedef struct dem_cli {
 	struct option *lopts;
 	char *sopts;
 	int nerr;               /* usage errors so far */
+	const char *usage, *purpose, *epilogue;  /* --help texts */
+	int done;               /* -1, or the exit code once --help/--version ran */
 } dem_cli_t;
 
-/* Build the getopt tables; returns 0, or -1 when out of memory. */
-int dem_cli_init(dem_cli_t *c, const char *prog, const dem_opt_t *opts);
+enum { DEM_ACCURACY_COARSE, DEM_ACCURACY_NORMAL, DEM_ACCURACY_FINE };
+
+/* A scene key set by an option (see dem_scene_override). */
+typedef struct dem_override {
+	const char *key, *text, *origin;
+} dem_override_t;
+
+/* What the common options say, and the scene keys the program's own
+ * options set, in the order typed. */
+typedef struct dem_common {
+	const char *scene, *output;
+	int binary, gzip, dump, verbose, quiet, have_seed, accuracy;
+	unsigned long seed;
+	dem_override_t *ov;
+	int nov, cap;
+	char **owned;           /* texts made for overrides, freed with it */
+	int nowned;
+} dem_common_t;
+
+/* Build the getopt tables; usage, purpose and epilogue (may be NULL) make
+ * the --help text.  Returns 0, or -1 when out of memory. */
+int dem_cli_init(dem_cli_t *c, const char *prog, const dem_opt_t *opts,
+		 const char *usage, const char *purpose, const char *epilogue);
 void dem_cli_free(dem_cli_t *c);
 /* Next option key (as getopt_long), -1 at the end; an unknown option or a
  * missing argument is counted and reported, and returns '?'. */
@@ -60,10 +83,22 @@ int dem_cli_double(dem_cli_t *c, const char *opt, const char *text,
 		   double min, double max, double *out);
 int dem_cli_ulong(dem_cli_t *c, const char *opt, const char *text,
 		  unsigned long min, unsigned long max, unsigned long *out);
-/* Print help: the usage lines, the one-line purpose, the option table,
- * and the epilogue (may be NULL). */
-void dem_cli_help(const dem_cli_t *c, FILE *f, const char *usage,
-		  const char *purpose, const char *epilogue);
+/* Print the help: usage lines, purpose, the option table, epilogue. */
+void dem_cli_help(const dem_cli_t *c, FILE *f);
+
+/* Room for the overrides of argc arguments; -1 without memory. */
+int dem_common_init(dem_common_t *m, int argc);
+void dem_common_free(dem_common_t *m);
+/* Handle key when it is one of DEM_OPTS_COMMON (returns 1; --help and
+ * --version print and set c->done to 0); 0 for the program's own keys. */
+int dem_cli_common(dem_cli_t *c, int key, const char *arg, dem_common_t *m);
+/* Record that an option sets a scene key. */
+void dem_common_override(dem_common_t *m, const char *key, const char *text,
+			 const char *origin);
+/* The same for "a:b:c" typed for a vector key: kept as "a, b, c".
+ * Returns -1 without memory. */
+int dem_common_override_vector(dem_common_t *m, const char *key,
+			       const char *text, const char *origin);
 /* "prog: usage error count"; prints "Try 'prog --help'" and returns
  * DEM_EUSAGE when there were errors, 0 otherwise. */
 int dem_cli_finish(const dem_cli_t *c);

@@ -11,6 +11,8 @@
  */
 #include "io/scene.h"
 
+#include "core/cli.h"
+
 #include "core/fmt.h"
 
 #include <ctype.h>
@@ -720,6 +722,17 @@ static int map_set(struct node *map, const char *p, size_t len,
 	node_free(en->val);
 	en->val = n;
 	return 0;
+}
+
+int dem_scene_override_all(dem_scene_t *s, const struct dem_override *ov,
+			   int n, dem_error_t *e)
+{
+	for (int i = 0; i < n; i++) {
+		int rc = dem_scene_override(s, ov[i].key, ov[i].text, ov[i].origin, e);
+		if (rc)
+			return rc;
+	}
+	return DEM_OK;
 }
 
 int dem_scene_override(dem_scene_t *s, const char *key, const char *text,

@@ -31,6 +31,12 @@ void dem_scene_free(dem_scene_t *s);
 int dem_scene_override(dem_scene_t *s, const char *key, const char *text,
 		       const char *origin, dem_error_t *e);
 
+struct dem_override;
+
+/* Apply the n overrides of ov in order (see dem_common_t in core/cli.h). */
+int dem_scene_override_all(dem_scene_t *s, const struct dem_override *ov,
+			   int n, dem_error_t *e);
+
 /* Is key present (in the file or by override)? */
 int dem_scene_has(const dem_scene_t *s, const char *key);
 
