@@ -2,8 +2,11 @@
 # plot.sh OUT PNGDIR - draw the report's plots with gnuplot from OUT/results.tsv
 # (and tables.tsv for the thesis's times):
 #
-#   cellsize-2d.png, cellsize-3d.png   D-cell time against the cell factor (Figs. 2.10-2.12)
-#   scale.png                          D-cell time against N, ours and the thesis's (Fig. 2.9)
+#   cellsize-2d.png, cellsize-3d.png   D-cell warm time against the cell factor (Figs. 2.10-2.12)
+#   scale.png                          D-cell time against N, ours (warm and cold) and the thesis's (Fig. 2.9)
+#
+# "Warm" is detect_warm_s (results.tsv column 18: the per-step time in a time
+# loop), "cold" detect_s (column 11: the first call of a process).
 #
 # The environment gives N1M, SWEEP2D and SWEEP3D, as the Makefile exports them.
 # shellcheck disable=SC2129 # the gnuplot script is written piece by piece
@@ -13,17 +16,17 @@ dat=$out/plot
 rm -rf "$dat"
 mkdir -p "$dat" "$png"
 
-# Sweep: one file per case, "factor ns/object", by factor.
+# Sweep: one file per case, "factor ns/object" (warm), by factor.
 awk -F'\t' -v dat="$dat" -v n1m="$N1M" '
 	!/^#/ && $1 == "dcell" && $2 != "def" && $4 == n1m && $9 == "bin" {
-		print $2, $11 / $4 * 1e9 | ("sort -n > " dat "/sweep-d" $3 "-rho" $6 "-lam" $7 ".dat")
+		print $2, $18 / $4 * 1e9 | ("sort -n > " dat "/sweep-d" $3 "-rho" $6 "-lam" $7 ".dat")
 	}' "$out/results.tsv"
 
-# Scale: "N/1e6 seconds" of D-cell, URD, lambda 1, square domain, per dimension
+# Scale: "N/1e6 warm-seconds cold-seconds" of D-cell, URD, lambda 1, square domain, per dimension
 # and density; ours from the results, the thesis's from tables.tsv.
 awk -F'\t' -v dat="$dat" '
 	!/^#/ && $1 == "dcell" && $2 == "def" && $5 == "urd" && $7 == "1" && $8 == "-" && $9 == "bin" && $4 >= 100000 {
-		print $4 / 1e6, $11 | ("sort -n > " dat "/scale-d" $3 "-rho" $6 "-ours.dat")
+		print $4 / 1e6, $18, $11 | ("sort -n > " dat "/scale-d" $3 "-rho" $6 "-ours.dat")
 	}' "$out/results.tsv"
 awk -F'\t' -v dat="$dat" '
 	!/^#/ && NF >= 9 && $8 == "dcell" && $4 == "urd" && $6 == "1" && $7 == "-" && $9 != "-" && !seen[$2, $3, $5]++ {
@@ -66,11 +69,11 @@ sweepplot() { # DIM DEFAULT
 	cat >> "$gp" <<-EOF
 	set terminal pngcairo size $((480 * npanel + 60)),460 font "sans,10"
 	set output "$png/cellsize-${d}d.png"
-	set multiplot layout 1,$npanel title "D-cell: detection time against cell size, $N1M $what, URD (dashed: the default, $def)" font "sans,12"
+	set multiplot layout 1,$npanel title "D-cell: warm detection time (per step of a time loop) against cell size, $N1M $what, URD (dashed: the default, $def)" font "sans,12"
 	set logscale x 2
 	set xtics ("0.5" 0.5, "0.75" 0.75, "1" 1, "1.5" 1.5, "2" 2, "3" 3, "4" 4, "5" 5, "6" 6, "8" 8)
 	set xlabel "cell size / mean object size"
-	set ylabel "ns per object"
+	set ylabel "ns per object (warm)"
 	set xrange [0.45:9]
 	set yrange [0:*]
 	set offsets 0, 0, graph 0.15, 0
@@ -81,21 +84,23 @@ sweepplot() { # DIM DEFAULT
 	printf 'unset multiplot\nreset\n' >> "$gp"
 }
 
-# scaleline DIM RHO COLOUR - ours (solid) and the thesis's (dashed) for one density
+# scaleline DIM RHO COLOUR - ours warm (solid), ours cold (dotted) and the
+# thesis's (dashed) for one density
 scaleline() {
 	o=$dat/scale-d$1-rho$2-ours.dat t=$dat/scale-d$1-rho$2-thesis.dat
 	[ -s "$o" ] && scmd="$scmd${scmd:+, }'$o' using 1:2 with linespoints linewidth 2 pointtype 7 linecolor rgb '$3' title 'ρ $2'"
+	[ -s "$o" ] && scmd="$scmd${scmd:+, }'$o' using 1:3 with linespoints dashtype 3 pointtype 1 linecolor rgb '$3' notitle"
 	[ -s "$t" ] && scmd="$scmd${scmd:+, }'$t' using 1:2 with linespoints dashtype 2 pointtype 6 linecolor rgb '$3' notitle"
 	return 0
 }
 
 printf 'set encoding utf8\n' > "$gp"
 sweepplot 2 3
-sweepplot 3 5
+sweepplot 3 2
 cat >> "$gp" <<EOF
 set terminal pngcairo size 1100,460 font "sans,10"
 set output "$png/scale.png"
-set multiplot layout 1,2 title "D-cell: detection time against the number of objects, λ 1, URD (solid, filled: ours; dashed, open: thesis on an Athlon 1.4 GHz)" font "sans,12"
+set multiplot layout 1,2 title "D-cell: detection time against the number of objects, λ 1, URD\nsolid, filled: ours warm (per step of a time loop); dotted: ours cold (first call); dashed, open: thesis on an Athlon 1.4 GHz" font "sans,11"
 set xlabel "objects (millions)"
 set ylabel "seconds"
 set xrange [0:*]
