@@ -2,8 +2,8 @@
  *
  *   dempack random [options]     N objects placed at random, overlaps allowed,
  *                                in a box sized for a target density (Ch. 2.5)
- *   dempack front [options]      disks filling a rectangle by an advancing
- *                                front, closed or open form (Ch. 5.2)
+ *   dempack front [options]      disks filling a rectangle or (open form) a
+ *                                polygon by an advancing front (Ch. 5.2)
  *   dempack shots [options]      the impacts of a peening job, pass by pass:
  *                                an offset n x n grid (Ch. 8.6) or random
  *                                positions up to a coverage (Ch. 7.1.3)
@@ -27,6 +27,7 @@
 #include "core/rng.h"
 #include "io/scene.h"
 #include "io/stream.h"
+#include "io/vtk.h"
 #include "pack/front.h"
 #include "pack/random.h"
 #include "pack/shots.h"
@@ -34,7 +35,7 @@
 #define PROG "dempack"
 
 enum { OPT_DIM = DEM_OPT_PROGRAM, OPT_DENSITY, OPT_LAW, OPT_RMIN, OPT_LAMBDA,
-       OPT_ASPECT, OPT_FORM, OPT_DOMAIN, OPT_CHECK_LIMIT, OPT_GRAVITY,
+       OPT_ASPECT, OPT_FORM, OPT_DOMAIN, OPT_POLYGON, OPT_CHECK_LIMIT, OPT_GRAVITY, OPT_VTK,
        OPT_PATTERN, OPT_AREA, OPT_GRID, OPT_PASSES, OPT_COVERAGE, OPT_PER_PASS,
        OPT_SEPARATION, OPT_DIMPLE, OPT_SPEED, OPT_ANGLE, OPT_SHOT_RADIUS };
 
@@ -51,6 +52,8 @@ static const dem_opt_t options[] = {
 	{"aspect", OPT_ASPECT, "AX:AY[:AZ]", "domain side ratios; default 1:1[:1]"},
 	{"form", OPT_FORM, "FORM", "front: closed (from the centre) or open (from the bottom); default open"},
 	{"domain", OPT_DOMAIN, "XLO:YLO:XHI:YHI", "front: the rectangle to fill; default 0:0:50:50 (m)"},
+	{"polygon", OPT_POLYGON, "X:Y:X:Y:X:Y[:X:Y]", "front, open form: fill this simple polygon (3 or more vertices, convex or concave) instead of --domain"},
+	{"vtk", OPT_VTK, "FILE", "front: also write the packing to FILE as legacy VTK points with a radius scalar (ParaView)"},
 	{"check-limit", OPT_CHECK_LIMIT, "K", "front: check at most K front disks each way; default 0, no limit"},
 	{"gravity", OPT_GRAVITY, NULL, "front, open form: each disk rests stably under gravity (-y)"},
 	{"pattern", OPT_PATTERN, "P", "shots: grid (offset n x n per pass) or random; default grid"},
@@ -79,8 +82,9 @@ static const char purpose[] =
 	"  random    N objects uniformly at random in a box sized for the target\n"
 	"            density; overlaps allowed (the detection test sets of Ch. 2.5)\n"
 	"  front     disks filling a rectangle densely and without overlap by an\n"
-	"            advancing front, closed or open form (Ch. 5.2); disks not wholly\n"
-	"            inside are culled; the density reached is in the header\n"
+	"            advancing front, closed or open form (Ch. 5.2), or with the open\n"
+	"            form any simple polygon; disks not wholly inside are culled; the\n"
+	"            density reached is in the header\n"
 	"  shots     the impacts of a peening job as a shot stream, pass by pass: an\n"
 	"            n x n grid offset in every pass (Ch. 8.6) or random positions\n"
 	"            until a target coverage (Ch. 7.1.3)";
@@ -88,6 +92,7 @@ static const char epilogue[] =
 	"Example:\n"
 	"  dempack random --dim 2 -n 1000000 --density 0.6 --lambda 10 --law urd --seed 1 -b\n"
 	"  dempack front --domain 0:0:1500:1500 --rmin 0.5 --lambda 2 --seed 1 -b\n"
+	"  dempack front --polygon 0:0:2:0:2:1:1:1:1:2:0:2 --rmin 0.02 --gravity --vtk l.vtk\n"
 	"  dempack shots --grid 4 --passes 32 --area 5.6mm:5.6mm --speed 46.5\n"
 	"  dempack shots --pattern random --coverage 200 --dimple-radius 0.4mm --seed 1\n"
 	"\nSee dempack(1), dem-scene(5) and dem-streams(5).\n";
@@ -95,6 +100,7 @@ static const char epilogue[] =
 struct cmdline {
 	dem_common_t com;
 	const char *method;
+	const char *vtk;        /* --vtk FILE, or NULL */
 };
 
 /* The method options: the scene key each sets, and the methods that read
@@ -119,6 +125,7 @@ static const struct method_opt {
 	{OPT_LAMBDA, M_RANDOM | M_FRONT, "--lambda", "pack.radius.lambda", 0},
 	{OPT_FORM, M_FRONT, "--form", "pack.form", 0},
 	{OPT_DOMAIN, M_FRONT, "--domain", "pack.domain", 1},
+	{OPT_POLYGON, M_FRONT, "--polygon", "pack.polygon", 1},
 	{OPT_CHECK_LIMIT, M_FRONT, "--check-limit", "pack.check_limit", 0},
 	{OPT_GRAVITY, M_FRONT, "--gravity", "pack.gravity", 0},
 	{OPT_PATTERN, M_SHOTS, "--pattern", "pack.pattern", 0},
@@ -150,6 +157,10 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 	while ((k = dem_cli_next(&c, argc, argv)) != -1) {
 		if (dem_cli_common(&c, k, optarg, com))
 			continue;       /* --accuracy: packings have no knob yet */
+		if (k == OPT_VTK) {     /* an output, not a scene key */
+			cl->vtk = optarg;
+			continue;
+		}
 		for (size_t i = 0; i < NMETHOD_OPTS; i++) {
 			const struct method_opt *o = &method_opts[i];
 			if (k != o->key)
@@ -178,6 +189,8 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 		for (size_t i = 0; m >= 0 && i < NMETHOD_OPTS; i++)
 			if ((given >> i & 1) && !(method_opts[i].methods >> m & 1))
 				dem_cli_error(&c, "%s: not an option of method %s", method_opts[i].name, methods[m]);
+		if (cl->vtk && m >= 0 && m != METHOD_FRONT)
+			dem_cli_error(&c, "--vtk: not an option of method %s", methods[m]);
 		if (m >= 0)     /* the method typed wins over the scene's */
 			dem_common_override(com, "pack.method", cl->method, cl->method);
 		if (optind < argc)
@@ -187,6 +200,51 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 	}
 	dem_cli_free(&c);
 	return done;
+}
+
+/* pack.polygon: the vertices written flat, [x1, y1, x2, y2, ...] (the
+ * scene reader has vectors of a known length only, so each even length is
+ * tried in turn; a nested [[x1, y1], ...] needs a scene getter for lists
+ * of vectors).  *v is malloc'd, NULL when the key is absent. */
+#define MAXPOLY 4096
+static int read_polygon(dem_scene_t *s, double **v, int *n, dem_error_t *e)
+{
+	dem_error_t e2;
+
+	*v = NULL;
+	*n = 0;
+	if (!dem_scene_has(s, "pack.polygon"))
+		return DEM_OK;
+	double *buf = malloc(2 * MAXPOLY * sizeof *buf);
+	if (!buf)
+		return dem_error_nomem(e, "polygon");
+	for (int k = 2; k <= 2 * MAXPOLY; k += 2) {
+		dem_error_clear(&e2);
+		if (dem_scene_vector(s, "pack.polygon", DEM_DIM_LENGTH, k, NULL,
+				     -HUGE_VAL, HUGE_VAL, buf, &e2) == DEM_OK) {
+			*v = buf;
+			*n = k / 2;
+			if (dem_front_polygon_check(buf, k / 2, &e2)) {
+				*v = NULL;
+				*n = 0;
+				free(buf);
+				return dem_scene_error(s, "pack.polygon", e, "%s", e2.msg);
+			}
+			return DEM_OK;
+		}
+		if (strstr(e2.msg, "pack.polygon[")) {  /* an item is bad */
+			free(buf);
+			if (strstr(e2.msg, "got a sequence"))
+				return dem_scene_error(s, "pack.polygon", e, "write the vertices "
+						       "flat: [x1, y1, x2, y2, ...] (lengths)");
+			*e = e2;
+			return e->code;
+		}
+	}
+	free(buf);
+	return dem_scene_error(s, "pack.polygon", e, "expected the vertices flat, "
+			       "[x1, y1, x2, y2, ...]: an even number of lengths, 3 to %d vertices",
+			       MAXPOLY);
 }
 
 /* The front method's keys of the pack: section. */
@@ -202,6 +260,16 @@ static int read_front(dem_scene_t *s, dem_front_spec_t *fp, dem_error_t *e)
 	    dem_scene_int(s, "pack.check_limit", 0, 0, 1000000000L, &limit, e) ||
 	    dem_scene_bool(s, "pack.gravity", 0, &fp->gravity, e))
 		return e->code;
+	double *poly;
+	int npoly;
+	if (read_polygon(s, &poly, &npoly, e))
+		return e->code;
+	fp->polygon = poly;
+	fp->npolygon = npoly;
+	if (poly && dem_scene_has(s, "pack.domain"))
+		return dem_scene_error(s, "pack.domain", e, "not read with pack.polygon; give one or the other");
+	if (poly && form != DEM_FRONT_OPEN)
+		return dem_scene_error(s, "pack.polygon", e, "a polygon needs the open form (Ch. 5.2.2)");
 	if (!(dom[0] < dom[2] && dom[1] < dom[3]))
 		return dem_scene_error(s, "pack.domain", e,
 				       "expected [xlo, ylo, xhi, yhi] with xlo < xhi and ylo < yhi");
@@ -364,6 +432,8 @@ struct front_out {
 	int flags;
 	dem_error_t *e;
 	double t_packed;        /* when the packing was done (cost line) */
+	const char *vtk_path;   /* --vtk, or NULL */
+	dem_vtk_t *vtk;
 };
 
 static int front_open(struct front_out *o)
@@ -372,7 +442,13 @@ static int front_open(struct front_out *o)
 	o->t_packed = dem_wall();
 	dem_fmt_double(rho, o->st->density);
 	dem_header_set(o->h, "density", "%s", rho);
-	return dem_writer_open(&o->w, o->path, o->h, o->flags, o->e);
+	int rc = dem_writer_open(&o->w, o->path, o->h, o->flags, o->e);
+	if (rc == DEM_OK && o->vtk_path) {
+		char title[80];
+		snprintf(title, sizeof title, "dempack front: %zu disks, density %s", o->st->kept, rho);
+		rc = dem_vtk_open(&o->vtk, o->vtk_path, 2, o->st->kept, title, o->e);
+	}
+	return rc;
 }
 
 static int front_emit(void *ctx, const double *x, double r)
@@ -383,6 +459,10 @@ static int front_emit(void *ctx, const double *x, double r)
 
 	if (!o->w && (rc = front_open(o)))
 		return rc;
+	if (o->vtk && (rc = dem_vtk_point(o->vtk, x, r, o->e))) {
+		o->vtk = NULL;  /* freed */
+		return rc;
+	}
 	return dem_writer_row(o->w, row, o->e);
 }
 
@@ -400,27 +480,48 @@ static int write_front(const dem_front_spec_t *fp, const struct cmdline *cl,
 	dem_header_add(h, "method", "front form=%s law=%s rmin=%s lambda=%s check_limit=%d gravity=%s",
 		       dem_front_form_names[fp->form], dem_radius_names[fp->law.kind], rmin,
 		       lambda, fp->check_limit, fp->gravity ? "true" : "false");
-	dem_fmt_double(buf[0], fp->lo[0]);
-	dem_fmt_double(buf[1], fp->lo[1]);
-	dem_fmt_double(buf[2], fp->hi[0]);
-	dem_fmt_double(buf[3], fp->hi[1]);
-	dem_header_set(h, "domain", "%s %s %s %s", buf[0], buf[1], buf[2], buf[3]);
+	if (fp->polygon) {
+		/* the vertices as given, x1 y1 x2 y2 ... */
+		size_t cap = (size_t)fp->npolygon * 2 * 26 + 1, len = 0;
+		char *line = malloc(cap);
+		if (!line)
+			return dem_error_nomem(e, "header");
+		for (int i = 0; i < 2 * fp->npolygon; i++) {
+			char v[32];
+			dem_fmt_double(v, fp->polygon[i]);
+			len += (size_t)snprintf(line + len, cap - len, "%s%s", i ? " " : "", v);
+		}
+		dem_header_set(h, "polygon", "%s", line);
+		free(line);
+	} else {
+		dem_fmt_double(buf[0], fp->lo[0]);
+		dem_fmt_double(buf[1], fp->lo[1]);
+		dem_fmt_double(buf[2], fp->hi[0]);
+		dem_fmt_double(buf[3], fp->hi[1]);
+		dem_header_set(h, "domain", "%s %s %s %s", buf[0], buf[1], buf[2], buf[3]);
+	}
 
 	gsl_rng *rng = dem_rng_derive(cl->com.seed, 0);
 	if (!rng)
 		return dem_error_nomem(e, "random generator");
 	struct front_out o = {NULL, h, &st, cl->com.output,
-			      (cl->com.binary ? DEM_STREAM_BINARY : 0) | (cl->com.gzip ? DEM_STREAM_GZIP : 0), e, 0};
+			      (cl->com.binary ? DEM_STREAM_BINARY : 0) | (cl->com.gzip ? DEM_STREAM_GZIP : 0), e, 0,
+			      cl->vtk, NULL};
 	double t0 = dem_wall();
 	rc = dem_pack_front(fp, rng, front_emit, &o, &st, e);
 	gsl_rng_free(rng);
 	if (rc == DEM_OK && !o.w)
 		rc = front_open(&o);
+	if (rc == DEM_OK && o.vtk) {
+		rc = dem_vtk_close(o.vtk, e);
+		o.vtk = NULL;
+	}
 	if (rc == DEM_OK) {
 		rc = dem_writer_close(o.w, e);
 		o.w = NULL;
 	}
 	if (rc) {
+		dem_vtk_abort(o.vtk);
 		dem_writer_abort(o.w);
 		return rc;
 	}
@@ -556,6 +657,7 @@ int main(int argc, char **argv)
 	if ((rc = read_scene(scene, &method, &sp, &fp, &hp, &e)))
 		goto fail;
 	if (cl.com.dump) {
+		free((double *)fp.polygon);
 		dem_scene_dump(scene, stdout);
 		dem_scene_free(scene);
 		free(args);
@@ -628,6 +730,7 @@ int main(int argc, char **argv)
 	dem_cost_time(&cost, "pack", dem_wall() - t0);
 	dem_cost_count(&cost, "objects", (double)sp.n);
 done:
+	free((double *)fp.polygon);
 	dem_header_free(&h);
 	dem_scene_free(scene);
 	free(args);
@@ -643,6 +746,7 @@ fail:
 	if (rc == DEM_EUSAGE)
 		fprintf(stderr, "Try '%s --help' for more information.\n", PROG);
 	dem_writer_abort(w);
+	free((double *)fp.polygon);
 	dem_scene_free(scene);
 	free(args);
 	dem_common_free(&cl.com);

@@ -77,6 +77,10 @@ enum { PLACED, FAIL, UNSTABLE_FWD, UNSTABLE_BWD };
 struct wall {
 	double qx, qy;          /* a point of the line */
 	double nx, ny;          /* unit normal into the domain */
+	double ex, ey;          /* polygon edge: from (qx, qy) to (ex, ey) */
+	int seg;                /* 1: a segment (polygon edge), 0: a line */
+	int pq, pe;             /* the reflex-vertex objects at its two ends,
+				 * NIL at a convex vertex */
 };
 
 struct packer {
@@ -86,7 +90,13 @@ struct packer {
 	dem_front_stats_t *st;
 
 	int nw;                 /* walls: objects 0 .. nw-1 */
-	struct wall w[4];
+	int nfix;               /* walls and reflex vertices (disks of radius 0,
+				 * objects nw .. nfix-1); disks from nfix on */
+	struct wall *w;
+	double lo[2], hi[2];    /* the domain's bounding box */
+	double *poly;           /* polygon vertices, anticlockwise; NULL: rectangle */
+	int npoly;
+	double area;            /* of the domain */
 	int n, cap;             /* objects so far, room */
 	double *x, *y, *r;
 	int *prev, *next;       /* front links (OFF: not on the front) */
@@ -158,6 +168,8 @@ static void release(struct packer *p)
 	free(p->sup);
 	free(p->cell);
 	free(p->ov);
+	free(p->w);
+	free(p->poly);
 }
 
 /* ---- grid ------------------------------------------------------------- */
@@ -181,6 +193,28 @@ static void grid_insert(struct packer *p, int i)
 		cell_of(p->x[i], p->gx, p->ginv, p->gnx);
 	p->cnext[i] = p->cell[k];
 	p->cell[k] = i;
+}
+
+/* Distance from (px, py) to the segment of a polygon wall: a disk near a
+ * wall's end is held by the segment, not by the infinite line. */
+static double seg_dist(const struct wall *w, double px, double py)
+{
+	double dx = w->ex - w->qx, dy = w->ey - w->qy;
+	double t = ((px - w->qx) * dx + (py - w->qy) * dy) / (dx * dx + dy * dy);
+	t = t < 0 ? 0 : t > 1 ? 1 : t;
+	return hypot(px - (w->qx + t * dx), py - (w->qy + t * dy));
+}
+
+/* Crossing number test (even-odd rule) of (x, y) in the n-gon v. */
+static int in_polygon(const double *v, int n, double x, double y)
+{
+	int in = 0;
+	for (int i = 0, j = n - 1; i < n; j = i++) {
+		double xi = v[2 * i], yi = v[2 * i + 1], xj = v[2 * j], yj = v[2 * j + 1];
+		if ((yi > y) != (yj > y) && x < xj + (y - yj) * (xi - xj) / (yi - yj))
+			in = !in;
+	}
+	return in;
 }
 
 static int ov_push(struct packer *p, int j)
@@ -214,7 +248,9 @@ static int collect(struct packer *p, double px, double py, double r)
 			for (int j = p->cell[cy * p->gnx + cx]; j != NIL; j = p->cnext[j]) {
 				double dx = px - p->x[j], dy = py - p->y[j];
 				double rj = p->r[j];
-				double d = r + rj - TOUCH * (r < rj ? r : rj);
+				/* a reflex vertex (rj = 0) takes the disk's own
+				 * tolerance, so a disk touching it is no overlap */
+				double d = r + rj - TOUCH * (rj > 0 && rj < r ? rj : r);
 				if (dx * dx + dy * dy < d * d) {
 					if (ov_push(p, j))
 						return -1;
@@ -223,7 +259,8 @@ static int collect(struct packer *p, double px, double py, double r)
 			}
 	for (int k = 0; k < p->nw; k++) {
 		const struct wall *w = &p->w[k];
-		if ((px - w->qx) * w->nx + (py - w->qy) * w->ny < r * (1 - TOUCH)) {
+		if (w->seg ? seg_dist(w, px, py) < r * (1 - TOUCH)
+			   : (px - w->qx) * w->nx + (py - w->qy) * w->ny < r * (1 - TOUCH)) {
 			if (ov_push(p, k))
 				return -1;
 			onfront += p->next[k] != OFF;
@@ -301,6 +338,8 @@ static int tangent(const struct packer *p, int a, int b, double r,
 static int outside(const struct packer *p, int i)
 {
 	const dem_front_spec_t *s = p->s;
+	if (p->poly)    /* the reflex vertices count as inside */
+		return i >= p->nfix && !in_polygon(p->poly, p->npoly, p->x[i], p->y[i]);
 	if (!p->closed)
 		return p->y[i] > s->hi[1];
 	return p->x[i] < s->lo[0] || p->x[i] > s->hi[0] ||
@@ -498,9 +537,35 @@ static int attempt(struct packer *p, int *pc, int *pn, double r, int *pi)
 	for (;;) {
 		double px, py;
 		p->st->attempts++;
-		if (!tangent(p, c, n, r, &px, &py)) {
+		if (!tangent(p, c, n, r, &px, &py) ||
+		    (p->poly && !in_polygon(p->poly, p->npoly, px, py))) {
+			/* (a polygon: a centre outside is behind a wall, from
+			 * the corner of two walls that are not neighbours) */
 			res = FAIL;
 			break;
+		}
+		if (p->poly) {
+			/* a disk touching a wall's line beyond a reflex end
+			 * touches no wall: go on from that vertex instead, a
+			 * disk of radius 0 next on the front */
+			int k = c < p->nw ? c : n < p->nw ? n : NIL, v = NIL;
+			if (k != NIL) {
+				const struct wall *w = &p->w[k];
+				double t = (px - w->qx) * (w->ex - w->qx) + (py - w->qy) * (w->ey - w->qy);
+				double l2 = (w->ex - w->qx) * (w->ex - w->qx) + (w->ey - w->qy) * (w->ey - w->qy);
+				v = t < 0 ? w->pq : t > l2 ? w->pe : NIL;
+			}
+			if (v != NIL) {
+				if (k == n && p->next[n] == v)
+					n = v;
+				else if (k == c && p->prev[c] == v)
+					c = v;
+				else {
+					res = FAIL;
+					break;
+				}
+				continue;
+			}
 		}
 		int onfront = collect(p, px, py, r);
 		if (onfront < 0)
@@ -627,10 +692,10 @@ static int start_closed(struct packer *p, gsl_rng *rng, int *seg)
 static void start_open(struct packer *p, int *seg)
 {
 	const dem_front_spec_t *s = p->s;
-	p->w[0] = (struct wall){s->lo[0], s->lo[1], 1, 0};     /* B_l */
-	p->w[1] = (struct wall){s->lo[0], s->lo[1], 0, 1};     /* B_b */
-	p->w[2] = (struct wall){s->hi[0], s->lo[1], -1, 0};    /* B_r */
-	p->nw = p->n = 3;
+	p->w[0] = (struct wall){s->lo[0], s->lo[1], 1, 0, 0, 0, 0, NIL, NIL};   /* B_l */
+	p->w[1] = (struct wall){s->lo[0], s->lo[1], 0, 1, 0, 0, 0, NIL, NIL};   /* B_b */
+	p->w[2] = (struct wall){s->hi[0], s->lo[1], -1, 0, 0, 0, 0, NIL, NIL};  /* B_r */
+	p->nw = p->nfix = p->n = 3;
 	for (int k = 0; k < 3; k++) {
 		p->x[k] = p->y[k] = 0;
 		p->r[k] = HUGE_VAL;
@@ -647,6 +712,88 @@ static void start_open(struct packer *p, int *seg)
 	p->fsize = 3;
 	p->st->front_max = 3;
 	*seg = 0;
+}
+
+/* Ch. 5.2.2 in a polygon (Ch. 5.2.4, Figs. 5.12-5.13): every edge is a
+ * wall; the lid is the edge whose midpoint is highest, and the front is
+ * the open chain of the other edges in anticlockwise order, from the one
+ * after the lid (head) to the one before it (tail), as B_l -> B_b -> B_r
+ * runs for the rectangle.  Each reflex vertex is an object of radius 0,
+ * on the grid (so every candidate is checked against it as a point) and,
+ * when inside the chain, on the front between its two edges: a corner of
+ * two lines would there be a disk touching neither segment.  The first
+ * active segment is the corner at the start of the lowest edge.  -1
+ * without memory. */
+static int start_polygon(struct packer *p, int *seg)
+{
+	const double *v = p->poly;
+	int nv = p->npoly, lid = 0, low = 0;
+
+	for (int k = 0; k < nv; k++) {
+		int k1 = (k + 1) % nv;
+		double ax = v[2 * k], ay = v[2 * k + 1], bx = v[2 * k1], by = v[2 * k1 + 1];
+		double dx = bx - ax, dy = by - ay, len = hypot(dx, dy);
+		/* anticlockwise: the inside is on the left */
+		p->w[k] = (struct wall){ax, ay, -dy / len, dx / len, bx, by, 1, NIL, NIL};
+		double my = ay + by, ly = v[2 * lid + 1] + v[2 * ((lid + 1) % nv) + 1];
+		double wy = v[2 * low + 1] + v[2 * ((low + 1) % nv) + 1];
+		if (my > ly)
+			lid = k;
+		if (my < wy || (my == wy && ax + bx < v[2 * low] + v[2 * ((low + 1) % nv)]))
+			low = k;
+	}
+	p->nw = p->n = nv;
+	for (int k = 0; k < nv; k++) {
+		p->x[k] = p->y[k] = 0;
+		p->r[k] = HUGE_VAL;
+		p->live[k] = 0;
+		p->hit[k] = p->tag[k] = 0;
+		p->cnext[k] = NIL;
+		p->prev[k] = p->next[k] = OFF;
+	}
+	/* reflex vertices: vertex[k] is the start of edge k; point[k] its
+	 * object or NIL */
+	int *point = malloc((size_t)nv * sizeof *point);
+	if (!point)
+		return -1;
+	for (int k = 0; k < nv; k++) {
+		const struct wall *a = &p->w[(k + nv - 1) % nv], *b = &p->w[k];
+		/* turning right at vertex k: the edge normals cross negatively */
+		point[k] = NIL;
+		if (a->nx * b->ny - a->ny * b->nx < 0) {
+			int i = add_disk(p, v[2 * k], v[2 * k + 1], 0);
+			if (i < 0) {
+				free(point);
+				return -1;
+			}
+			point[k] = i;
+			p->w[k].pq = i;
+			p->w[(k + nv - 1) % nv].pe = i;
+		}
+	}
+	p->nfix = p->n;
+	p->st->placed = 0;
+	/* the chain head .. tail, with the reflex vertices inside it */
+	int head = (lid + 1) % nv, tail = (lid + nv - 1) % nv, prev = head;
+	p->prev[head] = NIL;
+	p->fsize = 1;
+	for (int k = (head + 1) % nv; k != lid; k = (k + 1) % nv) {
+		if (point[k] != NIL) {
+			link(p, prev, point[k]);
+			prev = point[k];
+			p->fsize++;
+		}
+		link(p, prev, k);
+		prev = k;
+		p->fsize++;
+	}
+	p->next[tail] = NIL;
+	p->fhead = head;
+	p->ftail = tail;
+	p->st->front_max = (size_t)p->fsize;
+	*seg = low == head ? head : p->prev[low];
+	free(point);
+	return 0;
 }
 
 /* ---- the advance ------------------------------------------------------ */
@@ -716,6 +863,19 @@ static int inside(const struct packer *p, int i)
 {
 	const dem_front_spec_t *s = p->s;
 	double r = p->r[i];
+	if (p->poly) {
+		/* the centre inside, every edge at least r away (to TOUCH and
+		 * the rounding of coordinates of the bounding box's size) */
+		double big = fmax(fmax(fabs(p->lo[0]), fabs(p->hi[0])),
+				  fmax(fabs(p->lo[1]), fabs(p->hi[1])));
+		double tol = TOUCH * r + 4 * DBL_EPSILON * (big + r);
+		if (!in_polygon(p->poly, p->npoly, p->x[i], p->y[i]))
+			return 0;
+		for (int k = 0; k < p->nw; k++)
+			if (seg_dist(&p->w[k], p->x[i], p->y[i]) < r - tol)
+				return 0;
+		return 1;
+	}
 	for (int d = 0; d < 2; d++) {
 		double v = d ? p->y[i] : p->x[i];
 		double tl = TOUCH * r + 2 * DBL_EPSILON * (fabs(s->lo[d]) + r);
@@ -726,9 +886,87 @@ static int inside(const struct packer *p, int i)
 	return 1;
 }
 
+/* Do the closed segments a-b and c-d meet? */
+static double orient(double ax, double ay, double bx, double by, double cx, double cy)
+{
+	return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+}
+
+static int on_seg(double ax, double ay, double bx, double by, double cx, double cy)
+{
+	return fmin(ax, bx) <= cx && cx <= fmax(ax, bx) && fmin(ay, by) <= cy && cy <= fmax(ay, by);
+}
+
+static int meet(const double *a, const double *b, const double *c, const double *d)
+{
+	double o1 = orient(a[0], a[1], b[0], b[1], c[0], c[1]);
+	double o2 = orient(a[0], a[1], b[0], b[1], d[0], d[1]);
+	double o3 = orient(c[0], c[1], d[0], d[1], a[0], a[1]);
+	double o4 = orient(c[0], c[1], d[0], d[1], b[0], b[1]);
+	if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) &&
+	    ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
+		return 1;
+	return (o1 == 0 && on_seg(a[0], a[1], b[0], b[1], c[0], c[1])) ||
+	       (o2 == 0 && on_seg(a[0], a[1], b[0], b[1], d[0], d[1])) ||
+	       (o3 == 0 && on_seg(c[0], c[1], d[0], d[1], a[0], a[1])) ||
+	       (o4 == 0 && on_seg(c[0], c[1], d[0], d[1], b[0], b[1]));
+}
+
+int dem_front_polygon_check(const double *v, int n, dem_error_t *e)
+{
+	double a2 = 0, size = 0;
+
+	if (!v || n < 3)
+		return dem_error_set(e, DEM_EINPUT, "a polygon needs at least 3 vertices (got %d)",
+				     v ? n : 0);
+	for (int i = 0; i < 2 * n; i++) {
+		if (!isfinite(v[i]))
+			return dem_error_set(e, DEM_EINPUT, "polygon vertex %d is not finite", i / 2 + 1);
+		size = fmax(size, fabs(v[i]));
+	}
+	for (int i = 0; i < n; i++) {
+		const double *a = v + 2 * i, *b = v + 2 * ((i + 1) % n);
+		if (a[0] == b[0] && a[1] == b[1])
+			return dem_error_set(e, DEM_EINPUT, "polygon vertices %d and %d coincide",
+					     i + 1, (i + 1) % n + 1);
+		a2 += a[0] * b[1] - a[1] * b[0];
+	}
+	for (int i = 0; i < n; i++) {
+		const double *a = v + 2 * i, *b = v + 2 * ((i + 1) % n);
+		for (int j = i + 1; j < n; j++) {
+			const double *c = v + 2 * j, *d = v + 2 * ((j + 1) % n);
+			int bad;
+			if (j == i + 1 || (i == 0 && j == n - 1)) {
+				/* neighbours share a vertex: bad only when they
+				 * fold back onto each other */
+				const double *o = j == i + 1 ? b : a;   /* the shared vertex */
+				const double *p = j == i + 1 ? a : b, *q = j == i + 1 ? d : c;
+				bad = orient(o[0], o[1], p[0], p[1], q[0], q[1]) == 0 &&
+				      (p[0] - o[0]) * (q[0] - o[0]) + (p[1] - o[1]) * (q[1] - o[1]) > 0;
+			} else {
+				bad = meet(a, b, c, d);
+			}
+			if (bad)
+				return dem_error_set(e, DEM_EINPUT,
+						     "polygon edges %d-%d and %d-%d intersect: not a simple polygon",
+						     i + 1, (i + 1) % n + 1, j + 1, (j + 1) % n + 1);
+		}
+	}
+	if (!(fabs(a2) > 1e-12 * size * size))
+		return dem_error_set(e, DEM_EINPUT, "the polygon has zero area");
+	return DEM_OK;
+}
+
 static int check_spec(const dem_front_spec_t *s, dem_error_t *e)
 {
-	for (int d = 0; d < 2; d++)
+	if (s->polygon) {
+		if (s->form != DEM_FRONT_OPEN)
+			return dem_error_set(e, DEM_EINPUT,
+					     "advancing front: a polygon needs the open form (Ch. 5.2.2)");
+		if (dem_front_polygon_check(s->polygon, s->npolygon, e))
+			return dem_error_set(e, DEM_EINPUT, "advancing front: %s", e->msg);
+	}
+	for (int d = 0; d < 2 && !s->polygon; d++)
 		if (!(isfinite(s->lo[d]) && isfinite(s->hi[d]) && s->lo[d] < s->hi[d]))
 			return dem_error_set(e, DEM_EINPUT,
 					     "advancing front: empty domain along %c: [%g, %g]",
@@ -754,16 +992,16 @@ static int make_grid(struct packer *p, dem_error_t *e)
 {
 	const dem_front_spec_t *s = p->s;
 	double cs = 2 * s->law.rmax, m = 2 * cs;
-	double nx = ceil((s->hi[0] - s->lo[0] + 2 * m) / cs);
-	double ny = ceil((s->hi[1] - s->lo[1] + 2 * m) / cs);
+	double nx = ceil((p->hi[0] - p->lo[0] + 2 * m) / cs);
+	double ny = ceil((p->hi[1] - p->lo[1] + 2 * m) / cs);
 	if (!(nx * ny <= (double)MAXCELLS))
 		return dem_error_set(e, DEM_EIO,
 				     "advancing front: the domain holds too many disks of radius %g "
 				     "(%.3g grid cells; at most %ld)", s->law.rmax, nx * ny, MAXCELLS);
 	p->gnx = (int)nx;
 	p->gny = (int)ny;
-	p->gx = s->lo[0] - m;
-	p->gy = s->lo[1] - m;
+	p->gx = p->lo[0] - m;
+	p->gy = p->lo[1] - m;
 	p->ginv = 1 / cs;
 	p->cell = malloc((size_t)p->gnx * (size_t)p->gny * sizeof *p->cell);
 	if (!p->cell)
@@ -771,6 +1009,47 @@ static int make_grid(struct packer *p, dem_error_t *e)
 	for (long i = 0; i < (long)p->gnx * p->gny; i++)
 		p->cell[i] = NIL;
 	return DEM_OK;
+}
+
+/* The domain: the rectangle's three walls, or the polygon turned
+ * anticlockwise with room for its edges; the bounding box and the area.
+ * -1 without memory. */
+static int setup_domain(struct packer *p)
+{
+	const dem_front_spec_t *s = p->s;
+	if (!s->polygon) {
+		for (int d = 0; d < 2; d++) {
+			p->lo[d] = s->lo[d];
+			p->hi[d] = s->hi[d];
+		}
+		p->area = (s->hi[0] - s->lo[0]) * (s->hi[1] - s->lo[1]);
+		p->w = malloc(3 * sizeof *p->w);
+		return p->w ? 0 : -1;
+	}
+	int n = s->npolygon;
+	double a2 = 0;
+	p->poly = malloc(2 * (size_t)n * sizeof *p->poly);
+	p->w = malloc((size_t)n * sizeof *p->w);
+	if (!p->poly || !p->w)
+		return -1;
+	p->npoly = n;
+	for (int i = 0; i < n; i++) {
+		int j = (i + 1) % n;
+		a2 += s->polygon[2 * i] * s->polygon[2 * j + 1] - s->polygon[2 * i + 1] * s->polygon[2 * j];
+	}
+	p->lo[0] = p->lo[1] = HUGE_VAL;
+	p->hi[0] = p->hi[1] = -HUGE_VAL;
+	for (int i = 0; i < n; i++) {
+		int k = a2 > 0 ? i : n - 1 - i;         /* anticlockwise */
+		for (int d = 0; d < 2; d++) {
+			double c = s->polygon[2 * k + d];
+			p->poly[2 * i + d] = c;
+			p->lo[d] = fmin(p->lo[d], c);
+			p->hi[d] = fmax(p->hi[d], c);
+		}
+	}
+	p->area = 0.5 * fabs(a2);
+	return 0;
 }
 
 int dem_pack_front(const dem_front_spec_t *s, gsl_rng *rng,
@@ -793,12 +1072,16 @@ int dem_pack_front(const dem_front_spec_t *s, gsl_rng *rng,
 	p->limit = s->check_limit > 0 ? s->check_limit : LONG_MAX;
 	p->fhead = p->ftail = NIL;
 	p->serial = p->radial = 0;
+	if (setup_domain(p)) {
+		rc = dem_error_nomem(e, "advancing front walls");
+		goto out;
+	}
 
 	/* first reservation: the disks of mean square radius that fill the
 	 * rectangle (URD's E[r^2]); arrays double beyond that */
 	const dem_radius_law_t *L = &s->law;
 	double r2 = (L->rmin * L->rmin + L->rmin * L->rmax + L->rmax * L->rmax) / 3;
-	double est = (s->hi[0] - s->lo[0]) * (s->hi[1] - s->lo[1]) / (DEM_PI * r2);
+	double est = p->area / (DEM_PI * r2);
 	int want = est < 1 << 20 ? (int)(1.2 * est) + 64 : 1 << 20;
 	if ((rc = make_grid(p, e)))
 		goto out;
@@ -808,6 +1091,11 @@ int dem_pack_front(const dem_front_spec_t *s, gsl_rng *rng,
 	}
 	if (p->closed) {
 		if (start_closed(p, rng, &seg)) {
+			rc = dem_error_nomem(e, "advancing front disks");
+			goto out;
+		}
+	} else if (p->poly) {
+		if (start_polygon(p, &seg)) {
 			rc = dem_error_nomem(e, "advancing front disks");
 			goto out;
 		}
@@ -826,12 +1114,12 @@ int dem_pack_front(const dem_front_spec_t *s, gsl_rng *rng,
 	 * disk still rests on kept disks or walls (supports come first in
 	 * the order of generation).  live[] is free now and holds the flags. */
 	unsigned char *keep = p->live;
-	for (int i = p->nw; i < p->n; i++) {
+	for (int i = p->nfix; i < p->n; i++) {
 		int k = inside(p, i);
 		if (k && p->gravity)
 			for (int h = 0; h < 2; h++) {
 				int q = p->sup[2 * i + h];
-				if (q >= p->nw && !keep[q])
+				if (q >= p->nfix && !keep[q])
 					k = 0;
 			}
 		keep[i] = (unsigned char)k;
@@ -840,9 +1128,9 @@ int dem_pack_front(const dem_front_spec_t *s, gsl_rng *rng,
 			st->area += DEM_PI * p->r[i] * p->r[i];
 		}
 	}
-	st->density = st->area / ((s->hi[0] - s->lo[0]) * (s->hi[1] - s->lo[1]));
+	st->density = st->area / p->area;
 	rc = DEM_OK;
-	for (int i = p->nw; i < p->n && rc == DEM_OK; i++)
+	for (int i = p->nfix; i < p->n && rc == DEM_OK; i++)
 		if (keep[i]) {
 			double c[2] = {p->x[i], p->y[i]};
 			rc = emit(ctx, c, p->r[i]);

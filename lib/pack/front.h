@@ -1,5 +1,5 @@
 /* front.h - dense random packing of disks by an advancing front (Han 2004,
- * Ch. 5.2), in a rectangle.
+ * Ch. 5.2), in a rectangle or (open form) any simple polygon.
  *
  * Every new disk touches the two disks (or walls) of the current active
  * segment of the front, so each placement is locally as dense as it can be
@@ -25,8 +25,17 @@
  * Memory is O(N): all disks are kept until the culling at the end.
  *
  * The walls are held as lines (a point and an inward normal), and a disk
- * touching a wall is found as a disk touching a line, so a polygonal
- * boundary can later enter as more walls.
+ * touching a wall is found as a disk touching a line.
+ *
+ * Polygons (open form, Ch. 5.2.4, Figs. 5.12-5.13): every edge is a wall,
+ * checked as a segment; the front starts as the chain of edges from the
+ * one after the lid (the edge whose midpoint is highest) round to the one
+ * before it, and the first active segment is the corner at the start of
+ * the lowest edge.  A reflex vertex is a disk of radius 0 on the front
+ * between its two edges, so a disk can rest against it but never poke
+ * through.  A candidate whose centre is outside the polygon is refused,
+ * so every disk placed lies wholly inside; the lid is a wall off the
+ * front, which the packing fills up to but never touches.
  */
 #ifndef DEM_PACK_FRONT_H
 #define DEM_PACK_FRONT_H
@@ -54,13 +63,17 @@ typedef struct dem_front_spec {
 				 * each way (Ch. 5.2.4) */
 	int gravity;            /* open form only: the Fig. 5.9 stability rule,
 				 * gravity along -y */
+	const double *polygon;  /* open form: npolygon vertices x0 y0 x1 y1 ...
+				 * of a simple polygon, either orientation;
+				 * NULL: the rectangle lo, hi (then ignored) */
+	int npolygon;
 } dem_front_spec_t;
 
 typedef struct dem_front_stats {
 	size_t placed;          /* disks generated, before culling */
 	size_t kept;            /* disks wholly inside the rectangle (emitted) */
 	double area;            /* total area of the kept disks */
-	double density;         /* area over the rectangle's area */
+	double density;         /* area over the domain's area */
 	size_t attempts;        /* candidate positions computed */
 	size_t cases[3];        /* intermediate segments, Fig. 5.5 (b), (c), (d) */
 	size_t failed;          /* segments given up: the candidate overlaps a
@@ -78,11 +91,18 @@ typedef struct dem_front_stats {
  * radius r.  Nonzero stops the emission and is returned. */
 typedef int (*dem_front_emit_fn)(void *ctx, const double *x, double r);
 
-/* Pack the rectangle of s, drawing radii from rng, then emit the kept
+/* Check that the n vertices v (x0 y0 x1 y1 ...) make a simple polygon: at
+ * least 3 finite vertices, no edge of zero length, no two edges crossing
+ * or touching except neighbours at their shared vertex, non-zero area.
+ * Returns DEM_OK or DEM_EINPUT with a message naming the edges. */
+int dem_front_polygon_check(const double *v, int n, dem_error_t *e);
+
+/* Pack the rectangle (or polygon) of s, drawing radii from rng, then emit the kept
  * disks.  st (may be NULL) is complete before the first call of emit, so a
  * writer can put the density in its header.  Returns DEM_OK; DEM_EINPUT
- * for a bad spec (empty rectangle, radii not 0 < rmin <= rmax, gravity
- * with the closed form, a negative check limit); DEM_EIO when memory runs
+ * for a bad spec (empty rectangle, bad polygon, a polygon or gravity
+ * with the closed form, radii not 0 < rmin <= rmax, a negative check
+ * limit); DEM_EIO when memory runs
  * out or the rectangle holds too many disks (more than 2^31 - 1); or
  * emit's nonzero value. */
 int dem_pack_front(const dem_front_spec_t *s, gsl_rng *rng,

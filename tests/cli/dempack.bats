@@ -498,3 +498,80 @@ shot:
 	dempack shots --pattern random --coverage 150 --dimple-radius 0.4mm --seed 2 > "$T/b" 2>/dev/null
 	cmp <(grep -v '^# prog' "$T/a") <(grep -v '^# prog' "$T/b")
 }
+
+# ---- front in a polygon, --vtk ------------------------------------------
+
+# Every disk of the stream inside the polygon of its '# polygon' line:
+# centre inside (crossing number), every edge at least r (1 - 1e-9) away.
+inside_polygon() {
+	awk '/^# polygon / { n = (NF - 2) / 2; for (i = 0; i < n; i++) { X[i] = $(3 + 2 * i); Y[i] = $(4 + 2 * i) } }
+	     /^#/ { next }
+	     { x = $1; y = $2; r = $3; c = 0
+	       for (i = 0; i < n; i++) {
+		 j = (i + n - 1) % n
+		 if ((Y[i] > y) != (Y[j] > y) && x < X[j] + (y - Y[j]) * (X[i] - X[j]) / (Y[i] - Y[j])) c = !c
+		 dx = X[i] - X[j]; dy = Y[i] - Y[j]
+		 t = ((x - X[j]) * dx + (y - Y[j]) * dy) / (dx * dx + dy * dy); t = t < 0 ? 0 : t > 1 ? 1 : t
+		 ex = x - X[j] - t * dx; ey = y - Y[j] - t * dy
+		 if (sqrt(ex * ex + ey * ey) < r * (1 - 1e-9)) { print "edge", i, NR; bad++ }
+	       }
+	       if (!c) { print "outside", NR; bad++ } ; k++ }
+	     END { if (bad || k == 0) exit 1 }' "$1"
+}
+
+@test "dempack front --polygon: an L and a hopper, with and without gravity, every disk inside, no overlap" {
+	for g in "" --gravity; do
+		dempack front --polygon 0:0:2:0:2:1:1:1:1:2:0:2 --rmin 0.02 --lambda 3 --seed 4 $g -q >"$T/l"
+		grep -q '^# polygon 0 0 2 0 2 1 1 1 1 2 0 2$' "$T/l"
+		! grep -q '^# domain' "$T/l"
+		inside_polygon "$T/l"
+		[ "$(demdetect -a brute --shape 1e-9 -c "$T/l" 2>/dev/null)" -eq 0 ]
+		dempack front --polygon 0:10:4:2:4:0:6:0:6:2:10:10 --rmin 0.05 --lambda 4 --seed 4 $g -q >"$T/h"
+		inside_polygon "$T/h"
+		[ "$(demdetect -a brute --shape 1e-9 -c "$T/h" 2>/dev/null)" -eq 0 ]
+		[ "$(rows "$T/h")" -gt 200 ]
+	done
+}
+
+@test "dempack front: pack.polygon in the scene with units; clockwise the same disks" {
+	printf 'pack:\n  method: front\n  polygon: [0 mm, 0 mm, 20 mm, 0 mm, 15 mm, 10 mm, 5 mm, 10 mm]\n  radius: {min: 0.2 mm, lambda: 2}\n' >"$T/s.yaml"
+	dempack front -s "$T/s.yaml" --seed 2 -q >"$T/a"
+	grep -q '^# polygon 0 0 0.02 0 0.015 0.01 0.005 0.01$' "$T/a"
+	inside_polygon "$T/a"
+	dempack front --polygon 5mm:10mm:15mm:10mm:20mm:0mm:0mm:0mm --rmin 0.2mm --lambda 2 --seed 2 -q >"$T/b"
+	diff <(grep -v '^#' "$T/a") <(grep -v '^#' "$T/b")
+}
+
+@test "dempack front --polygon: bad polygons and the closed form are refused, no output" {
+	for p in 0:0:1:0 0:0:1:1:1:0:0:1 0:0:1:1:2:2 0:0:1:0:2; do
+		run --separate-stderr dempack front --polygon "$p" -o "$T/x"
+		# a usage error on the command line (2), a scene value error (1)
+		[ "$status" -eq 1 ] || [ "$status" -eq 2 ] || { echo "$p: $status $stderr"; false; }
+		[[ "$stderr" == *polygon* ]]
+		[ ! -e "$T/x" ]
+	done
+	run --separate-stderr dempack front --form closed --polygon 0:0:1:0:0:1 -o "$T/x"
+	[ "$status" -eq 2 ]
+	[[ "$stderr" == *"open form"* ]]
+	[ ! -e "$T/x" ]
+	usage_error dempack random --vtk "$T/v"
+}
+
+@test "dempack front --vtk: legacy VTK points with the stream's centres and radii" {
+	dempack front --polygon 0:0:2:0:2:1:1:1:1:2:0:2 --rmin 0.05 --lambda 2 --seed 1 -q --vtk "$T/p.vtk" >"$T/p"
+	n=$(rows "$T/p")
+	head -1 "$T/p.vtk" | grep -q '^# vtk DataFile Version 3.0$'
+	grep -q '^DATASET POLYDATA$' "$T/p.vtk"
+	grep -q "^POINTS $n double\$" "$T/p.vtk"
+	grep -q "^VERTICES $n $((2 * n))\$" "$T/p.vtk"
+	grep -q "^POINT_DATA $n\$" "$T/p.vtk"
+	grep -q '^SCALARS radius double 1$' "$T/p.vtk"
+	# same values: points (x y 0) and radii, in order, against the stream
+	awk -v n="$n" 'FNR == NR { if (!/^#/) { k++; X[k] = $1; Y[k] = $2; R[k] = $3 } next }
+	     /^POINTS/ { m = 1; i = 0; next } /^VERTICES/ { m = 0 }
+	     /^LOOKUP_TABLE/ { m = 2; i = 0; next }
+	     m == 1 { i++; if ($1 != X[i] || $2 != Y[i] || $3 != 0) bad++ }
+	     m == 2 { i++; if ($1 != R[i]) bad++ }
+	     END { if (bad || i != n || k != n) { print bad, i, k; exit 1 } }' "$T/p" "$T/p.vtk"
+	ls "$T" | { ! grep -q tmp; }
+}

@@ -13,7 +13,14 @@
  *   - gravity (Ch. 5.2.3, Fig. 5.9): every disk off the floor touches two
  *     supports (disks or side walls) such that the vertical through its
  *     centre meets the segment between them below the centre;
- *   - reproducibility from the seed.
+ *   - reproducibility from the seed;
+ *   - polygons (Ch. 5.2.4, Figs. 5.12-5.13): convex (hexagon, trapezoid)
+ *     and concave (L, hopper), lambda 1, 10, 100, with and without
+ *     gravity: no overlap as above; every centre inside (crossing number)
+ *     and every edge, as a segment, at least r(1 - 1e-9) away; under
+ *     gravity every disk is held up by Fig. 5.9 with edges as supports at
+ *     their contact points; the density against the polygon's area
+ *     (shoelace) is reported; bad polygons are refused.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -105,10 +112,13 @@ static void pairs_of(const struct set *s, dem_pairs_t *p)
 
 	assert_int_equal(dem_boxes_alloc(&b, 2, s->n), DEM_OK);
 	for (size_t i = 0; i < s->n; i++) {
-		b.lo[0][i] = s->x[i] - s->r[i];
-		b.hi[0][i] = s->x[i] + s->r[i];
-		b.lo[1][i] = s->y[i] - s->r[i];
-		b.hi[1][i] = s->y[i] + s->r[i];
+		/* boxes a little larger, so disks touching in a vertical or
+		 * horizontal stack (boxes meeting edge to edge) pair up too */
+		double h = s->r[i] * (1 + TOL);
+		b.lo[0][i] = s->x[i] - h;
+		b.hi[0][i] = s->x[i] + h;
+		b.lo[1][i] = s->y[i] - h;
+		b.hi[1][i] = s->y[i] + h;
 	}
 	dem_detect_opts_init(&o);
 	o.algo = DEM_DETECT_BRUTE;
@@ -124,7 +134,7 @@ static double gap(const struct set *s, size_t i, size_t j)
 }
 
 /* No pair overlaps by more than TOL of the smaller radius; every disk is
- * inside [lo, hi] to TOL of its radius. */
+ * inside [lo, hi] to TOL of its radius (sp NULL: the overlaps only). */
 static void check_packing(const struct set *s, const dem_front_spec_t *sp,
 			  const char *label)
 {
@@ -138,7 +148,7 @@ static void check_packing(const struct set *s, const dem_front_spec_t *sp,
 				 label, i, j, -gap(s, i, j) / rm);
 	}
 	dem_pairs_free(&p);
-	for (size_t i = 0; i < s->n; i++) {
+	for (size_t i = 0; sp && i < s->n; i++) {
 		double t = TOL * s->r[i];
 		if (s->x[i] - s->r[i] < sp->lo[0] - t || s->x[i] + s->r[i] > sp->hi[0] + t ||
 		    s->y[i] - s->r[i] < sp->lo[1] - t || s->y[i] + s->r[i] > sp->hi[1] + t)
@@ -434,6 +444,208 @@ static void test_gravity(void **state)
 	}
 }
 
+/* ---- polygons --------------------------------------------------------- */
+
+struct poly {
+	const char *name;
+	int n;
+	double v[16];
+	double rmax;            /* largest radius, so the counts stay moderate */
+};
+
+static const struct poly polys[] = {
+	{"hexagon", 6, {10, 0, 20, 0, 25, 8.66, 20, 17.32, 10, 17.32, 5, 8.66}, 0.6},
+	{"trapezoid", 4, {0, 0, 24, 0, 18, 14, 6, 14}, 0.6},
+	/* clockwise on purpose: either orientation is accepted */
+	{"L", 6, {0, 0, 0, 20, 10, 20, 10, 10, 20, 10, 20, 0}, 0.6},
+	{"hopper", 6, {0, 20, 8, 4, 8, 0, 12, 0, 12, 4, 20, 20}, 0.6},
+};
+
+static double seg_dist(double px, double py, double ax, double ay, double bx, double by,
+		       double *cx, double *cy)
+{
+	double dx = bx - ax, dy = by - ay;
+	double t = ((px - ax) * dx + (py - ay) * dy) / (dx * dx + dy * dy);
+	t = t < 0 ? 0 : t > 1 ? 1 : t;
+	*cx = ax + t * dx;
+	*cy = ay + t * dy;
+	return hypot(px - *cx, py - *cy);
+}
+
+static int in_poly(const struct poly *P, double x, double y)
+{
+	int in = 0;
+	for (int i = 0, j = P->n - 1; i < P->n; j = i++) {
+		double xi = P->v[2 * i], yi = P->v[2 * i + 1];
+		double xj = P->v[2 * j], yj = P->v[2 * j + 1];
+		if ((yi > y) != (yj > y) && x < xj + (y - yj) * (xi - xj) / (yi - yj))
+			in = !in;
+	}
+	return in;
+}
+
+static double poly_area(const struct poly *P)
+{
+	double a = 0;
+	for (int i = 0; i < P->n; i++) {
+		int j = (i + 1) % P->n;
+		a += P->v[2 * i] * P->v[2 * j + 1] - P->v[2 * i + 1] * P->v[2 * j];
+	}
+	return fabs(a) / 2;
+}
+
+/* Fig. 5.9 in a polygon: the supports of disk i are the disks it touches
+ * (at their centres) and the edges it touches (at the contact point); it
+ * rests when one support is right under its centre, or two lie one each
+ * side with the segment between them below the centre. */
+static int supported_poly(const struct set *s, const struct poly *P,
+			  const dem_pair_t *p, const size_t *first, size_t i)
+{
+	double x = s->x[i], y = s->y[i], r = s->r[i];
+	double sx[64], sy[64];
+	int ns = 0;
+
+	for (int k = 0; k < P->n && ns < 64; k++) {
+		int k1 = (k + 1) % P->n;
+		double cx, cy;
+		double d = seg_dist(x, y, P->v[2 * k], P->v[2 * k + 1], P->v[2 * k1],
+				    P->v[2 * k1 + 1], &cx, &cy);
+		if (fabs(d - r) <= TOL * r) {
+			if (fabs(cx - x) <= TOL * r && cy < y)
+				return 1;       /* on a floor */
+			sx[ns] = cx;
+			sy[ns++] = cy;
+		}
+	}
+	for (size_t k = first[i]; k < first[i + 1] && ns < 64; k++) {
+		size_t j = p[k].j;
+		if (fabs(gap(s, i, j)) <= TOL * fmin(r, s->r[j])) {
+			sx[ns] = s->x[j];
+			sy[ns++] = s->y[j];
+		}
+	}
+	for (int a = 0; a < ns; a++)
+		for (int b = 0; b < ns; b++) {
+			if (!(sx[a] <= x + TOL * r && x <= sx[b] + TOL * r && sx[a] < sx[b]))
+				continue;
+			double t = (x - sx[a]) / (sx[b] - sx[a]);
+			if (y > sy[a] + t * (sy[b] - sy[a]))
+				return 1;
+		}
+	return 0;
+}
+
+static void check_gravity_poly(const struct set *out, const struct poly *P,
+			       const char *label)
+{
+	dem_pairs_t p;
+	pairs_of(out, &p);
+	dem_pair_t *q = malloc((2 * p.n + 1) * sizeof *q);
+	size_t *first = calloc(out->n + 1, sizeof *first);
+	assert_non_null(q);
+	assert_non_null(first);
+	for (size_t k = 0; k < p.n; k++) {
+		q[2 * k] = p.p[k];
+		q[2 * k + 1] = (dem_pair_t){p.p[k].j, p.p[k].i};
+	}
+	qsort(q, 2 * p.n, sizeof *q, by_i);
+	for (size_t k = 0; k < 2 * p.n; k++)
+		first[q[k].i + 1]++;
+	for (size_t i = 0; i < out->n; i++)
+		first[i + 1] += first[i];
+	for (size_t i = 0; i < out->n; i++)
+		if (!supported_poly(out, P, q, first, i))
+			fail_msg("%s: disk %zu at (%g, %g; %g) is not supported",
+				 label, i, out->x[i], out->y[i], out->r[i]);
+	free(first);
+	free(q);
+	dem_pairs_free(&p);
+}
+
+static void test_polygons(void **state)
+{
+	static const double lambdas[] = {1, 10, 100};
+	(void)state;
+	for (size_t k = 0; k < sizeof polys / sizeof polys[0]; k++)
+		for (int l = 0; l < 3; l++)
+			for (int g = 0; g < 2; g++) {
+				const struct poly *P = &polys[k];
+				dem_front_spec_t s = spec(DEM_FRONT_OPEN, 1, 1, DEM_RADIUS_URD,
+							  P->rmax / lambdas[l], lambdas[l]);
+				struct set out;
+				dem_front_stats_t st;
+				char label[96];
+				s.polygon = P->v;
+				s.npolygon = P->n;
+				s.gravity = g;
+				snprintf(label, sizeof label, "%s, lambda %g%s", P->name,
+					 lambdas[l], g ? ", gravity" : "");
+				run(&s, 30 + k, &out, &st);
+				print_message("# %s: %zu disks, density %.4f, failed %zu, unstable %zu\n",
+					      label, out.n, st.density, st.failed, st.unstable);
+				assert_true(out.n > 100);
+				check_packing(&out, NULL, label);
+				double a = 0;
+				for (size_t i = 0; i < out.n; i++) {
+					double r = out.r[i], cx, cy;
+					a += DEM_PI * r * r;
+					if (!in_poly(P, out.x[i], out.y[i]))
+						fail_msg("%s: disk %zu centre outside", label, i);
+					for (int e = 0; e < P->n; e++) {
+						int e1 = (e + 1) % P->n;
+						if (seg_dist(out.x[i], out.y[i], P->v[2 * e], P->v[2 * e + 1],
+							     P->v[2 * e1], P->v[2 * e1 + 1], &cx, &cy) < r * (1 - TOL))
+							fail_msg("%s: disk %zu crosses edge %d", label, i, e);
+					}
+				}
+				assert_int_equal(st.kept, out.n);
+				assert_true(fabs(st.density - a / poly_area(P)) <= 1e-12 * st.density);
+				/* well packed, though the lid stays untouched and
+				 * lambda 1 cannot pack against slanted walls */
+				if (st.density < 0.6)
+					fail_msg("%s: density %g", label, st.density);
+				if (g)
+					check_gravity_poly(&out, P, label);
+				set_free(&out);
+			}
+}
+
+/* Polygons that are not simple, or have no area, are refused. */
+static void test_polygon_errors(void **state)
+{
+	(void)state;
+	static const struct {
+		int n;
+		double v[10];
+	} bad[] = {
+		{2, {0, 0, 1, 0}},                              /* too few */
+		{4, {0, 0, 1, 1, 1, 0, 0, 1}},                  /* a bow tie */
+		{3, {0, 0, 1, 1, 2, 2}},                        /* no area */
+		{4, {0, 0, 1, 0, 1, 0, 0, 1}},                  /* repeated vertex */
+		{5, {0, 0, 4, 0, 4, 4, 2, 0, 0, 4}},            /* a vertex on an edge */
+		{4, {0, 0, 2, 0, 1, 0, 1, 1}},                  /* folds back */
+	};
+	for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+		dem_error_t e;
+		dem_error_clear(&e);
+		if (dem_front_polygon_check(bad[k].v, bad[k].n, &e) != DEM_EINPUT)
+			fail_msg("bad polygon %zu accepted", k);
+		assert_true(e.msg[0] != '\0');
+	}
+	dem_error_t e;
+	dem_error_clear(&e);
+	assert_int_equal(dem_front_polygon_check(polys[2].v, polys[2].n, &e), DEM_OK);
+	/* a polygon with the closed form */
+	dem_front_spec_t s = spec(DEM_FRONT_CLOSED, 1, 1, DEM_RADIUS_URD, 0.5, 2);
+	s.polygon = polys[0].v;
+	s.npolygon = polys[0].n;
+	gsl_rng *g = dem_rng_derive(1, 0);
+	struct set out = {0};
+	assert_int_equal(dem_pack_front(&s, g, collect, &out, NULL, &e), DEM_EINPUT);
+	assert_int_equal(out.n, 0);
+	gsl_rng_free(g);
+}
+
 /* The same seed gives the same packing, another seed another. */
 static void test_seed(void **state)
 {
@@ -506,6 +718,8 @@ int main(void)
 		cmocka_unit_test(test_gravity),
 		cmocka_unit_test(test_seed),
 		cmocka_unit_test(test_errors),
+		cmocka_unit_test(test_polygons),
+		cmocka_unit_test(test_polygon_errors),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
