@@ -154,6 +154,7 @@ static int read_scene(dem_scene_t *s, struct settings *st, dem_error_t *e)
  * particles for --shape. */
 struct objects {
 	int particles;          /* 1: disks/spheres, 0: boxes */
+	int centres;            /* centres and radii kept, for --shape */
 	int dim;
 	size_t n, cap;
 	double *x[DEM_MAXDIM], *r;
@@ -175,14 +176,14 @@ static int objects_grow(struct objects *o)
 	size_t cap = o->cap ? 2 * o->cap : 4096;
 	for (int d = 0; d < o->dim; d++) {
 		double **arr[3] = {&o->b.lo[d], &o->b.hi[d], &o->x[d]};
-		for (int k = 0; k < (o->particles ? 3 : 2); k++) {
+		for (int k = 0; k < (o->centres ? 3 : 2); k++) {
 			double *p = realloc(*arr[k], cap * sizeof *p);
 			if (!p)
 				return DEM_EIO;
 			*arr[k] = p;
 		}
 	}
-	if (o->particles) {
+	if (o->centres) {
 		double *p = realloc(o->r, cap * sizeof *p);
 		if (!p)
 			return DEM_EIO;
@@ -192,8 +193,8 @@ static int objects_grow(struct objects *o)
 	return DEM_OK;
 }
 
-static int read_objects(dem_reader_t *rd, double buffer, struct objects *o,
-			dem_error_t *e)
+static int read_objects(dem_reader_t *rd, double buffer, int shape,
+			struct objects *o, dem_error_t *e)
 {
 	const dem_header_t *h = dem_reader_header(rd);
 	static const char *const pcol[] = {"x", "y", "z"};
@@ -204,6 +205,7 @@ static int read_objects(dem_reader_t *rd, double buffer, struct objects *o,
 
 	memset(o, 0, sizeof *o);
 	o->particles = strcmp(h->kind, "particles") == 0;
+	o->centres = o->particles && shape;
 	if (!o->particles && strcmp(h->kind, "boxes") != 0)
 		return dem_error_set(e, DEM_EINPUT, "%s: a %s stream; expected particles or boxes",
 				     dem_reader_name(rd), h->kind);
@@ -240,10 +242,12 @@ static int read_objects(dem_reader_t *rd, double buffer, struct objects *o,
 			if (r < 0)
 				return dem_error_set(e, DEM_EINPUT, "%s: negative radius %g",
 						     dem_reader_where(rd), r);
-			o->r[i] = r;
+			if (o->centres)
+				o->r[i] = r;
 			for (int d = 0; d < o->dim; d++) {
 				double x = v[ci[d]] * f[d];
-				o->x[d][i] = x;
+				if (o->centres)
+					o->x[d][i] = x;
 				o->b.lo[d][i] = x - r - buffer;
 				o->b.hi[d][i] = x + r + buffer;
 			}
@@ -423,7 +427,7 @@ int main(int argc, char **argv)
 
 	double t = dem_wall();
 	if ((rc = dem_reader_open(&rd, cl.input, &e)) ||
-	    (rc = read_objects(rd, set.buffer, &ob, &e)))
+	    (rc = read_objects(rd, set.buffer, set.shape, &ob, &e)))
 		goto fail;
 	if (set.shape && !ob.particles) {
 		rc = dem_error_set(&e, DEM_EINPUT, "%s: --shape needs disks or spheres, not boxes",
