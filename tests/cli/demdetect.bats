@@ -6,6 +6,7 @@
 # hand-written streams whose pairs are known by construction.
 
 bats_require_minimum_version 1.5.0
+load helpers
 
 setup() {
 	T=$BATS_TEST_TMPDIR
@@ -53,19 +54,6 @@ boxes_random() {
 # The pair rows of a pair stream (no header, no trailer).
 pairrows() {
 	grep -v '^#' "$@"
-}
-
-# A usage error: exit 2, nothing on stdout, one message line, then
-# "Try 'demdetect --help' ..."; returns 1 when it is not one.
-usage_error() {
-	run --separate-stderr "$@"
-	echo "\$ $*  -> status $status, stdout '$output', stderr:"
-	printf '  %s\n' "${stderr_lines[@]}"
-	[ "$status" -eq 2 ] || return 1
-	[ -z "$output" ] || return 1
-	[ "${#stderr_lines[@]}" -eq 2 ] || return 1
-	[[ ${stderr_lines[0]} == "demdetect: "* ]] || return 1
-	[ "${stderr_lines[1]}" = "Try 'demdetect --help' for more information." ]
 }
 
 # Bad input: exit 1, nothing on stdout, one line on stderr that starts with

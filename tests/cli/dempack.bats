@@ -5,6 +5,7 @@
 # dem-streams(5), the radius laws of lib/core/radius.h (Han 2004, Ch. 2.5).
 
 bats_require_minimum_version 1.5.0
+load helpers
 
 setup() {
 	T=$BATS_TEST_TMPDIR
@@ -13,22 +14,6 @@ setup() {
 # Rows of a text stream (lines that are not header or trailer).
 rows() {
 	grep -vc '^#' "$1"
-}
-
-# A usage error: exit 2, nothing on stdout, one message line naming the
-# program, then "Try 'prog --help' ..." (coreutils).  Returns 1 (with the
-# details on stdout, which bats shows) when it is not one.
-# usage_error PROG ARGS...
-usage_error() {
-	local prog=$1
-	run --separate-stderr "$@"
-	echo "\$ $*  -> status $status, stdout '$output', stderr:"
-	printf '  %s\n' "${stderr_lines[@]}"
-	[ "$status" -eq 2 ] || return 1
-	[ -z "$output" ] || return 1
-	[ "${#stderr_lines[@]}" -eq 2 ] || return 1
-	[[ ${stderr_lines[0]} == "$prog: "* ]] || return 1
-	[ "${stderr_lines[1]}" = "Try '$prog --help' for more information." ]
 }
 
 # The packing density of a text particle stream of dimension $2: the sum
