@@ -761,7 +761,7 @@ int dem_scene_override(dem_scene_t *s, const char *key, const char *text,
 		if (en && en->val->kind != NODE_MAP && !node_is_null(en->val)) {
 			where(s, en->val->origin, en->val->line, en->val->col,
 			      w, sizeof w);
-			return dem_error_set(e, DEM_EINPUT, "command line: %s: "
+			return dem_error_set(e, DEM_EUSAGE, "command line: %s: "
 					     "cannot set %s: %.*s is %s (%s)",
 					     origin, key, (int)(p - key + len),
 					     key, describe(en->val, got,

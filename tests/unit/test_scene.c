@@ -736,7 +736,7 @@ static void test_override_errors(void **state)
 
 	(void)state;
 	assert_int_equal(dem_scene_override(s, "pack.n.x", "1", "--x", &e),
-			 DEM_EINPUT);
+			 DEM_EUSAGE);
 	assert_string_equal(e.msg, "command line: --x: cannot set pack.n.x: "
 			    "pack.n is '10' (strip.yaml:2:6)");
 	dem_error_clear(&e);
