@@ -20,8 +20,9 @@ endif
 
 CFLAGS   := -std=c11 -Wall -Wextra -Werror $(OPT) -D_POSIX_C_SOURCE=200809L \
             -DDEM_VERSION='"$(VERSION)"' -Ilib -fopenmp \
-            $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
-LDLIBS   := $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lm
+            $(shell pkg-config --cflags $(PKGS) 2>/dev/null) -I/usr/include/suitesparse
+# CHOLMOD (SuiteSparse) has no pkg-config file on Debian 12
+LDLIBS   := $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lcholmod -lm
 LDFLAGS  := $(filter -fsanitize% -fno-sanitize%,$(OPT)) -fopenmp
 
 LIB_SRC  := $(sort $(wildcard lib/*/*.c))

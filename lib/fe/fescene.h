@@ -1,0 +1,33 @@
+/* fescene.h - the scene sections the finite element programs share.
+ *
+ * The `material` section (demshot's block and demform's plate are the same
+ * part, so they read the same section):
+ *
+ *   material:
+ *     E: 72 GPa                 # Young's modulus (required)
+ *     nu: 0.33                  # Poisson's ratio (required)
+ *     rho: 2800 kg/m^3          # density (required by the explicit stage)
+ *     yield: 450 MPa            # initial yield stress: switches plasticity on
+ *     hardening: 120 MPa        # linear plastic modulus H (default 0)
+ *     table:                    # or a hardening table (Table 7.1) instead
+ *       strain: [0, 0.0017, 0.0039]          # effective plastic strain
+ *       stress: [349.8, 605.4, 645.9] MPa     # flow stress
+ *     rate_exponent: 0.0455     # switches rate dependence on (Table 7.2)
+ *     rate_ref: 1 1/s           # reference strain rate (default 1/s)
+ *
+ * Only what is given is simulated: no yield and no table, an elastic
+ * material; no rate_exponent, a rate-independent one.
+ */
+#ifndef DEM_FE_FESCENE_H
+#define DEM_FE_FESCENE_H
+
+#include "fe/material.h"
+#include "io/scene.h"
+
+/* Read the material section and build the material.  need_rho: the
+ * density is required (explicit dynamics); otherwise it defaults to 0.
+ * Errors are DEM_EINPUT naming file:line:col. */
+int dem_scene_material(dem_scene_t *s, int need_rho, dem_mat_t *m,
+		       dem_error_t *e);
+
+#endif
