@@ -11,7 +11,7 @@
  *     hardening: 120 MPa        # linear plastic modulus H (default 0)
  *     table:                    # or a hardening table (Table 7.1) instead
  *       strain: [0, 0.0017, 0.0039]          # effective plastic strain
- *       stress: [349.8, 605.4, 645.9] MPa     # flow stress
+ *       stress: [349.8 MPa, 605.4 MPa, 645.9 MPa]
  *     rate_exponent: 0.0455     # switches rate dependence on (Table 7.2)
  *     rate_ref: 1 1/s           # reference strain rate (default 1/s)
  *
