@@ -654,6 +654,23 @@ int dem_scene_has(const dem_scene_t *s, const char *key)
 	return lookup(s, key, &n, NULL) == 1;
 }
 
+int dem_scene_length(const dem_scene_t *s, const char *key)
+{
+	struct node *n;
+	const char *c;
+	int k = 1;
+
+	if (lookup(s, key, &n, NULL) != 1 || node_is_null(n))
+		return -1;
+	if (n->kind == NODE_SEQ)
+		return (int)n->n;
+	if (n->kind != NODE_SCALAR)
+		return 0;
+	for (c = n->text; *c; c++)
+		k += *c == ',';
+	return k;
+}
+
 int dem_scene_error(const dem_scene_t *s, const char *key, dem_error_t *e,
 		    const char *fmt, ...)
 {

@@ -40,6 +40,12 @@ int dem_scene_override_all(dem_scene_t *s, const struct dem_override *ov,
 /* Is key present (in the file or by override)? */
 int dem_scene_has(const dem_scene_t *s, const char *key);
 
+/* Number of items of key's sequence (or of the comma-separated items of a
+ * scalar vector such as "1, 2 mm"), for vectors whose length the scene
+ * chooses (tables); -1 when the key is absent, 0 for a mapping.  Read the
+ * items with dem_scene_vector(). */
+int dem_scene_length(const dem_scene_t *s, const char *key);
+
 /* Getters.  An absent key yields the default.  A present key must have the
  * right type, unit and range [min, max] (inclusive), or the getter fails with
  * DEM_EINPUT and a message naming file:line:col, the key and the expected
