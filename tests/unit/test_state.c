@@ -512,6 +512,34 @@ static void test_unstructured(void **state)
 	free_mesh(&m);
 }
 
+/* The mesher's graded box (lib/fe/mesh) goes through: its nodes lie on its
+ * grid lines and its hexes are numbered as the reader checks. */
+static void test_mesher_mesh(void **state)
+{
+	dem_mesh_t m;
+	dem_axis_t ax[3] = {
+		{-4e-3, 4e-3, -1e-3, 1e-3, 0.25e-3, 1.5, 1e-3},
+		{-4e-3, 4e-3, -1e-3, 1e-3, 0.25e-3, 1.5, 1e-3},
+		{-4e-3, 0, -0.5e-3, 0, 0.1e-3, 1.4, 1e-3},
+	};
+	dem_state_reader_t *r;
+	dem_error_t e = {0};
+	struct frame f;
+	(void)state;
+	assert_int_equal(dem_mesh_box(&m, ax, &e), 0);
+	make_frame(&f, &m, 7, 1e-4);
+	write_stream(path("box.state"), &m, &f, 1, DEM_STATE_FLAGS);
+	assert_int_equal(dem_state_reader_open(&r, path("box.state"), &e), 0);
+	const dem_mesh_t *rm = dem_state_mesh(r);
+	assert_int_equal(rm->nx, m.nx);
+	assert_int_equal(rm->nz, m.nz);
+	bits_equal(rm->gz, m.gz, m.nz + 1);
+	assert_memory_equal(rm->hex, m.hex, 8 * m.ne * sizeof(uint32_t));
+	dem_state_reader_close(r);
+	free_frame(&f);
+	dem_mesh_free(&m);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -524,6 +552,7 @@ int main(void)
 		cmocka_unit_test(test_refusals),
 		cmocka_unit_test(test_writer_refuses_nonfinite),
 		cmocka_unit_test(test_unstructured),
+		cmocka_unit_test(test_mesher_mesh),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }
