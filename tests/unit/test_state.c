@@ -1,7 +1,9 @@
 /* test_state.c - the state stream (lib/io/state): the mesh and every frame
  * read back bit for bit (binary gzip, plain binary and text), the grid of a
  * structured mesh recovered, and the refusals: truncation anywhere, a
- * missing or misplaced row, a wrong kind, values that are not finite. */
+ * missing or misplaced row, a wrong kind, values that are not finite.
+ * Also the other output of a state, the VTU file (lib/io/vtu): its arrays
+ * decoded back bit for bit, ASCII and base64. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -15,6 +17,7 @@
 #include <unistd.h>
 
 #include "io/state.h"
+#include "io/vtu.h"
 
 static char dir[64];
 
@@ -540,6 +543,203 @@ static void test_mesher_mesh(void **state)
 	dem_mesh_free(&m);
 }
 
+/* ---- VTU ------------------------------------------------------------------ */
+
+static char *slurp(const char *p)
+{
+	FILE *f = fopen(p, "rb");
+	assert_non_null(f);
+	fseek(f, 0, SEEK_END);
+	long n = ftell(f);
+	fseek(f, 0, SEEK_SET);
+	char *s = malloc(n + 1);
+	assert_int_equal(fread(s, 1, n, f), (size_t)n);
+	s[n] = '\0';
+	fclose(f);
+	return s;
+}
+
+/* The text between '>' and '<' of the DataArray named name. */
+static char *array_text(const char *doc, const char *name)
+{
+	char key[64];
+	snprintf(key, sizeof key, "Name=\"%s\"", name);
+	const char *a = strstr(doc, key);
+	if (!a)
+		fail_msg("no array %s", name);
+	a = strchr(a, '>') + 1;
+	const char *b = strchr(a, '<');
+	char *t = malloc(b - a + 1);
+	memcpy(t, a, b - a);
+	t[b - a] = '\0';
+	return t;
+}
+
+/* Decode base64 (one run, whitespace skipped); returns the bytes. */
+static unsigned char *unbase64(const char *t, size_t *n)
+{
+	static const char al[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+	unsigned char *out = malloc(strlen(t));
+	unsigned v = 0;
+	int k = 0;
+	*n = 0;
+	for (; *t; t++) {
+		const char *c = strchr(al, *t);
+		if (*t == '=' || !c || !*t)
+			continue;
+		v = v << 6 | (unsigned)(c - al);
+		if (++k == 4) {
+			out[(*n)++] = v >> 16;
+			out[(*n)++] = v >> 8 & 255;
+			out[(*n)++] = v & 255;
+			k = 0;
+			v = 0;
+		}
+	}
+	if (k == 2)
+		out[(*n)++] = v >> 4;
+	else if (k == 3) {
+		out[(*n)++] = v >> 10;
+		out[(*n)++] = v >> 2 & 255;
+	}
+	return out;
+}
+
+/* Array name of the file as doubles (ASCII or binary with its count). */
+static double *vtu_doubles(const char *doc, const char *name, int binary, size_t *n)
+{
+	char *t = array_text(doc, name);
+	double *x;
+	if (binary) {
+		size_t nb;
+		unsigned char *b = unbase64(t, &nb);
+		uint64_t count;
+		memcpy(&count, b, 8);
+		assert_int_equal(count, nb - 8);
+		*n = (nb - 8) / 8;
+		x = malloc(nb);
+		memcpy(x, b + 8, nb - 8);
+		free(b);
+	} else {
+		x = malloc(strlen(t) * sizeof *x);
+		char *p = t, *end;
+		*n = 0;
+		for (;;) {
+			double v = strtod(p, &end);
+			if (end == p)
+				break;
+			x[(*n)++] = v;
+			p = end;
+		}
+	}
+	free(t);
+	return x;
+}
+
+static void test_vtu(void **state)
+{
+	dem_mesh_t m;
+	struct frame f;
+	dem_error_t e = {0};
+	size_t n;
+	(void)state;
+	make_mesh(&m, 3, 2, 2, GX, GY, GZ + 3);
+	make_frame(&f, &m, 0, 0);
+	for (size_t i = 0; i < 6 * m.ne; i++) {      /* finite, moderate values */
+		f.sig[i] = 1e8 * sin((double)i);
+		f.eps[i] = 1e-3 * cos((double)i);
+	}
+	/* element 0 uniaxial, element 1 pure shear: von Mises 100 and 10 sqrt 3 */
+	memset(f.sig, 0, 12 * sizeof(double));
+	f.sig[0] = 100;
+	f.sig[6 + 3] = 10;
+	for (int binary = 0; binary < 2; binary++) {
+		const char *p = path(binary ? "b.vtu" : "a.vtu");
+		dem_vtu_fields_t fl = {f.u, f.sig, f.eps, f.ep};
+		assert_int_equal(dem_vtu_write(p, &m, &fl, binary, &e), 0);
+		char *doc = slurp(p);
+		assert_non_null(strstr(doc, "<VTKFile type=\"UnstructuredGrid\""));
+		char piece[96];
+		snprintf(piece, sizeof piece, "<Piece NumberOfPoints=\"%zu\" NumberOfCells=\"%zu\">", m.nn, m.ne);
+		assert_non_null(strstr(doc, piece));
+		double *x = vtu_doubles(doc, "Points", binary, &n);
+		assert_int_equal(n, 3 * m.nn);
+		bits_equal(x, m.X, n);
+		free(x);
+		x = vtu_doubles(doc, "displacement", binary, &n);
+		assert_int_equal(n, 3 * m.nn);
+		for (size_t i = 0; i < n; i++)  /* -0 is written as 0 in ASCII */
+			assert_true(x[i] == f.u[i]);
+		free(x);
+		x = vtu_doubles(doc, "stress", binary, &n);
+		assert_int_equal(n, 6 * m.ne);
+		bits_equal(x, f.sig, n);
+		free(x);
+		x = vtu_doubles(doc, "strain", binary, &n);
+		for (size_t i = 0; i < n; i++)
+			assert_true(x[i] == (i % 6 < 3 ? 1 : 0.5) * f.eps[i]);
+		free(x);
+		x = vtu_doubles(doc, "von_mises", binary, &n);
+		assert_int_equal(n, m.ne);
+		assert_true(fabs(x[0] - 100) < 1e-12);
+		assert_true(fabs(x[1] - 10 * sqrt(3)) < 1e-12);
+		free(x);
+		x = vtu_doubles(doc, "plastic_strain", binary, &n);
+		for (size_t i = 0; i < n; i++)
+			assert_true(x[i] == f.ep[i]);
+		free(x);
+		/* connectivity, offsets and types */
+		char *t = array_text(doc, "connectivity");
+		if (binary) {
+			size_t nb;
+			unsigned char *b = unbase64(t, &nb);
+			assert_int_equal(nb, 8 + 64 * m.ne);
+			for (size_t i = 0; i < 8 * m.ne; i++) {
+				int64_t v;
+				memcpy(&v, b + 8 + 8 * i, 8);
+				assert_int_equal(v, m.hex[i]);
+			}
+			free(b);
+			free(t);
+			t = array_text(doc, "types");
+			b = unbase64(t, &nb);
+			assert_int_equal(nb, 8 + m.ne);
+			for (size_t i = 0; i < m.ne; i++)
+				assert_int_equal(b[8 + i], 12);
+			free(b);
+		} else {
+			char *p2 = t;
+			for (size_t i = 0; i < 8 * m.ne; i++)
+				assert_int_equal(strtol(p2, &p2, 10), m.hex[i]);
+			free(t);
+			t = array_text(doc, "offsets");
+			p2 = t;
+			for (size_t i = 0; i < m.ne; i++)
+				assert_int_equal(strtol(p2, &p2, 10), 8 * (i + 1));
+			free(t);
+			t = array_text(doc, "types");
+			p2 = t;
+			for (size_t i = 0; i < m.ne; i++)
+				assert_int_equal(strtol(p2, &p2, 10), 12);
+		}
+		free(t);
+		free(doc);
+	}
+	/* a NaN: refused, no file */
+	f.ep[3] = NAN;
+	dem_vtu_fields_t fl = {f.u, f.sig, f.eps, f.ep};
+	assert_int_equal(dem_vtu_write(path("nan.vtu"), &m, &fl, 1, &e), DEM_ENUMERIC);
+	assert_non_null(strstr(e.msg, "element 3: the plastic strain is not finite"));
+	assert_int_equal(access(path("nan.vtu"), F_OK), -1);
+	/* the mesh alone; an unwritable path */
+	dem_error_clear(&e);
+	assert_int_equal(dem_vtu_write(path("mesh.vtu"), &m, NULL, 0, &e), 0);
+	assert_int_equal(dem_vtu_write("/nonexistent/dir/x.vtu", &m, NULL, 0, &e), DEM_EIO);
+	assert_non_null(strstr(e.msg, "/nonexistent/dir/x.vtu"));
+	free_frame(&f);
+	free_mesh(&m);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -553,6 +753,7 @@ int main(void)
 		cmocka_unit_test(test_writer_refuses_nonfinite),
 		cmocka_unit_test(test_unstructured),
 		cmocka_unit_test(test_mesher_mesh),
+		cmocka_unit_test(test_vtu),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }
