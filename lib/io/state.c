@@ -37,7 +37,7 @@ static int is_own_key(const char *k)
 
 static void state_header(dem_header_t *h)
 {
-	char name[8];
+	char name[16];
 	dem_header_init(h, "state", 1, 3);
 	dem_header_add_col(h, "rec", DEM_U32, "-");
 	dem_header_add_col(h, "id", DEM_U32, "-");
