@@ -19,6 +19,7 @@
 #include "fe/explicit.h"
 
 #include <math.h>
+#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -28,7 +29,7 @@
 #define NB DEM_HEX8_NB
 #define NCHUNK 64     /* node chunks of the node loop (fixed: see header) */
 #define MAXSLAB 32    /* slabs of element layers */
-#define PAR_MIN 2048  /* fewer elements than this: no threads */
+#define PAR_MIN 20000 /* fewer elements than this: one thread by default */
 
 enum { S_T, S_WXA, S_WXB, S_WDA, S_WDB, S_N };   /* node-loop sums */
 enum { E_INT, E_PL, E_HG, E_NPL, E_N };          /* element-loop sums */
@@ -58,6 +59,7 @@ struct dem_fe {
 	size_t nblk;
 	double *sig, *ep, *Qs, *eps, *kdt;
 	int hg;               /* hourglass control on */
+	int nthr;             /* threads */
 	int nslab;
 	slab_t *slab;
 	int *slab_of_k;
@@ -155,6 +157,8 @@ int dem_fe_create(dem_fe_t **out, const dem_mesh_t *mesh, const dem_mat_t *mat,
 		return dem_error_set(e, DEM_EINPUT, "explicit: damping must be >= 0, got %g", o->damping);
 	if (!(o->hg_stiff >= 0) || !(o->hg_visc >= 0) || !isfinite(o->hg_stiff + o->hg_visc))
 		return dem_error_set(e, DEM_EINPUT, "explicit: hourglass coefficients must be >= 0");
+	if (o->threads < 0)
+		return dem_error_set(e, DEM_EINPUT, "explicit: threads must be >= 0, got %d", o->threads);
 	if (!(mat->rho > 0))
 		return dem_error_set(e, DEM_EINPUT, "explicit: the material needs a density");
 	if (mesh->ne == 0 || mesh->nx < 1 || mesh->ny < 1 || mesh->nz < 1)
@@ -170,6 +174,7 @@ int dem_fe_create(dem_fe_t **out, const dem_mesh_t *mesh, const dem_mat_t *mat,
 	fe->ne = mesh->ne;
 	fe->hg = o->rule == DEM_FE_1PT && (o->hg_stiff > 0 || o->hg_visc > 0);
 	size_t nn = fe->nn, ne = fe->ne;
+	fe->nthr = o->threads > 0 ? o->threads : ne >= PAR_MIN ? omp_get_max_threads() : 1;
 
 	/* slabs of whole layers */
 	int nz = mesh->nz;
@@ -387,6 +392,7 @@ typedef struct coef {
 	double dt, dtp;      /* dt_{n+1}, dt_n */
 	double co, cf, rden; /* v+ = (co v- + cf F / m) rden */
 	double w1, w0;       /* v_n = w1 v+ + w0 v- (Eq. 1.3) */
+	double k0, k1;       /* kinetic energy 1/2 m (k0 v- + k1 v+) v+ */
 	double rdth;         /* 1 / dt_{n+1/2} */
 	double alpha;
 } coef_t;
@@ -416,7 +422,7 @@ static inline void node_range(dem_fe_t *fe, const coef_t *c, size_t n0, size_t n
 			 * reaction too (mass times acceleration, damping and
 			 * internal force minus the loads) */
 			double fa = fixed ? m * (vp - vm) * c->rdth + fd + fi[d] : fext;
-			T += m * vn * vn;
+			T += m * (c->k0 * vm + c->k1 * vp) * vp;
 			wda += fd * dua;
 			wdb += fd * dub;
 			wxa += fa * dua;
@@ -694,6 +700,8 @@ int dem_fe_step(dem_fe_t *fe, double dt, dem_error_t *e)
 		c.rden = 0.5;
 		c.w1 = 0;
 		c.w0 = 1;
+		c.k0 = 2;    /* v_{-1/2} = 2 v_0 - v_{1/2} */
+		c.k1 = -1;
 		c.rdth = 2 / dt;
 	} else {
 		double dth = 0.5 * (dtp + dt);
@@ -702,11 +710,13 @@ int dem_fe_step(dem_fe_t *fe, double dt, dem_error_t *e)
 		c.rden = 1 / (2 + a * dt);
 		c.w1 = dt / (2 * dth);
 		c.w0 = dtp / (2 * dth);
+		c.k0 = 1;
+		c.k1 = 0;
 		c.rdth = 1 / dth;
 	}
-	int par = fe->ne >= PAR_MIN;
+	int nthr = fe->nthr;
 	double w0 = dem_wall();
-#pragma omp parallel for schedule(static) if (par)
+#pragma omp parallel for schedule(static) num_threads(nthr) if (nthr > 1)
 	for (int ch = 0; ch < NCHUNK; ch++)
 		node_chunk(fe, &c, ch);
 	double w1 = dem_wall();
@@ -727,13 +737,13 @@ int dem_fe_step(dem_fe_t *fe, double dt, dem_error_t *e)
 	en->plastic = fe->epl;
 	en->hourglass = fe->ehg;
 	en->balance = en->kinetic + en->internal + en->hourglass + en->damping - en->external - fe->T0;
-	en->scale = fmax(fmax(fmax(en->kinetic, fe->T0), fmax(fabs(en->internal), fabs(en->hourglass))),
+	en->scale = fmax(fmax(fmax(fabs(en->kinetic), fabs(fe->T0)), fmax(fabs(en->internal), fabs(en->hourglass))),
 			 fmax(fabs(en->damping), fabs(en->external)));
 	fe->wx_acc = en->external + sum[S_WXB];
 	fe->wd_acc = en->damping + sum[S_WDB];
 
 	/* 4. elements on x_{n+1}: even slabs, then odd slabs */
-#pragma omp parallel if (par)
+#pragma omp parallel num_threads(nthr) if (nthr > 1)
 	for (int ph = 0; ph < 2; ph++) {
 #pragma omp for schedule(dynamic, 1)
 		for (int s = ph; s < fe->nslab; s += 2)

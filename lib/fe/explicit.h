@@ -57,7 +57,15 @@
  * the start) and the step adapts at every cycle.
  *
  * Energies (at t_n, one step behind the state; dem_fe_energy): kinetic
- * (from the mid-step velocity of Eq. 1.3), internal (the stress work, by
+ * 1/2 v_{n-1/2} M v_{n+1/2}, the form the central difference conserves
+ * exactly for a linear undamped system at a constant step (1/2 v_n M v_n
+ * with the mid-step velocity of Eq. 1.3 swings by tens of percent when
+ * modes near the stability limit are excited); at the start v_{-1/2} =
+ * v_0 - dt/2 M^-1 F_0, the velocity from which Eq. 1.9 is a central
+ * difference step, so that a load acting at t = 0 makes the initial kinetic
+ * energy 1/2 v_0 M v_0 - (dt/2)^2 F_0 M^-1 F_0 / 2 (the energy the
+ * half-step start misses: 7 % of the work in a coarse sudden-load test);
+ * internal (the stress work, by
  * the trapezoidal rule per element; elastic + plastic), plastic (the part
  * dissipated by plastic flow), hourglass (work of the hourglass forces),
  * damping (work against C v) and external (work of the pressure loads, of
@@ -100,12 +108,17 @@ typedef struct dem_fe_opts {
 	double damping;     /* alpha of C = alpha M (1/s), >= 0 */
 	double hg_stiff;    /* kappa of the stiffness form of the hourglass control */
 	double hg_visc;     /* kappa of the viscous form */
+	int threads;        /* OpenMP threads; 0: OpenMP's default for meshes of
+			     * 20000 elements or more, 1 for smaller ones (a
+			     * step of a small mesh is shorter than the cost of
+			     * waking threads, and on a busy machine a thread
+			     * descheduled at a barrier stalls the others) */
 } dem_fe_opts_t;
 
 /* Defaults: DEM_FE_1PT, small strain, dt_factor 0.9, no damping,
  * hg_stiff 0.1 (Flanagan & Belytschko recommend 0.05-0.15; the stiffness
  * form resists the static hourglass modes that a residual stress field
- * would otherwise leave free), hg_visc 0. */
+ * would otherwise leave free), hg_visc 0, threads 0. */
 void dem_fe_opts_default(dem_fe_opts_t *o);
 
 /* alpha = 2 xi omega_1 with omega_1 = pi c_s / (2 H) (see above), for a
