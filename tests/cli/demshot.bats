@@ -1,0 +1,159 @@
+#!/usr/bin/env bats
+# Command-line tests of demshot (the explicit stage, loaded by pressure
+# pulses).  References: the static uniaxial-strain solution of a laterally
+# confined column under a uniform pressure p (sigma_zz = -p, sigma_xx =
+# sigma_yy = -p nu / (1 - nu)); energy conservation of the central
+# difference method; the exit codes of DESIGN.md.
+
+bats_require_minimum_version 1.5.0
+load helpers
+
+setup() {
+	T=$BATS_TEST_TMPDIR
+	cat > "$T/col.yaml" <<'YAML'
+material:
+  E: 68 GPa
+  nu: 0.3
+  rho: 2700 kg/m^3
+block:
+  size: [0.8 mm, 0.8 mm, 1 mm]
+  element: 0.2 mm
+load:
+  pressure: 100 MPa
+run:
+  end: 10 us
+  damping: 1
+YAML
+	cat > "$T/pulse.yaml" <<'YAML'
+material:
+  E: 68 GPa
+  nu: 0.3
+  rho: 2700 kg/m^3
+  yield: 157 MPa
+  hardening: 120 MPa
+block:
+  size: [2 mm, 2 mm, 1 mm]
+  element: 0.1 mm
+  fine: [1 mm, 1 mm]
+  fine_depth: 0.4 mm
+  ratio: 1.3
+load:
+  pressure: 1 GPa
+  area: [0.4 mm, 0.4 mm]
+  times: [0, 0.1 us, 0.3 us, 0.4 us]
+  factors: [0, 1, 1, 0]
+run:
+  end: 1 us
+  frames: 2
+YAML
+}
+
+@test "demshot: a confined column under a step pressure settles to the static uniaxial-strain stress" {
+	run --separate-stderr bash -c "demshot -s '$T/col.yaml' | demprofile; echo \"\${PIPESTATUS[*]}\""
+	echo "$stderr"
+	[ "${lines[-1]}" = "0 0" ]
+	# every layer: sxx = syy = -p nu/(1-nu) = -42857142.857 Pa, szz = -1e8 Pa, to 1e-6
+	grep -v '^#' <<< "$output" | sed '$d' | awk '
+		function bad(v, w) { d = v - w; if (d < 0) d = -d; return d > 1e-6 * (w < 0 ? -w : w) }
+		{ n++; if (bad($3, -42857142.857142857) || bad($4, -42857142.857142857) || bad($5, -1e8)) { print "layer", n, $0; exit 1 } }
+		END { if (n != 5) { print "layers:", n; exit 1 } }'
+}
+
+@test "demshot: the state stream has the requested frames at their times, readable by demprofile" {
+	run --separate-stderr demshot -s "$T/pulse.yaml" -q -o "$T/p.state" --vtu "$T/p.vtu"
+	echo "$stderr"
+	[ "$status" -eq 0 ]
+	[ -z "$output" ]
+	[ -s "$T/p.state" ]
+	grep -q '<Piece NumberOfPoints="2312" NumberOfCells="1792">' "$T/p.vtu"
+	# gzip-compressed binary with the header of a state stream
+	gzip -dc "$T/p.state" | head -1 | grep -qx '# dem state 1'
+	gzip -dc "$T/p.state" | grep -a -m1 '^# area' | grep -q -- '-0.0002.* 0.0002'
+	run --separate-stderr demprofile -v --pass all "$T/p.state"
+	[ "$status" -eq 0 ]
+	# one pass (1), profiled from its last frame
+	[ "$(grep -v '^#' <<< "$output" | cut -d' ' -f1 | sort -u)" = 1 ]
+	# the cost line: steps, cycles, energy error
+	[[ ${stderr_lines[-1]} == "demprofile: cost: "* ]]
+	run --separate-stderr demshot -s "$T/pulse.yaml" -o "$T/q.state"
+	[[ ${stderr_lines[-1]} =~ ^demshot:\ cost:\ wall_s=.*\ steps=[0-9]+\ elements=1792\ elem_cycles=[0-9]+\ ns_per_elem_cycle=[0-9.]+\ energy_error= ]]
+	grep -q "effects: J2 plasticity (linear hardening), large strain, one-point" <<< "$stderr"
+}
+
+@test "demshot: an elastic pulse without damping keeps the energy balance within 1 %" {
+	sed -e '/yield/d' -e '/hardening/d' "$T/pulse.yaml" > "$T/el.yaml"
+	run --separate-stderr demshot -s "$T/el.yaml" --end 2us -o "$T/el.state"
+	[ "$status" -eq 0 ]
+	err=$(sed -n 's/.*energy_error=\([0-9.e+-]*\).*/\1/p' <<< "${stderr_lines[-1]}")
+	echo "energy error $err"
+	awk -v e="$err" 'BEGIN { exit !(e < 1e-2) }'
+}
+
+@test "demshot: results do not depend on the number of threads" {
+	demshot -s "$T/pulse.yaml" -q --threads 1 | demprofile | grep -v '^#' > "$T/one"
+	demshot -s "$T/pulse.yaml" -q --threads 2 | demprofile | grep -v '^#' > "$T/two"
+	[ -s "$T/one" ]
+	cmp "$T/one" "$T/two"
+}
+
+@test "demshot: full integration and small strain run and are named in the effects" {
+	run --separate-stderr demshot -s "$T/pulse.yaml" --rule full --strain small -o "$T/f.state"
+	[ "$status" -eq 0 ]
+	grep -q "small strain, full 2x2x2 B-bar integration" <<< "$stderr"
+	run --separate-stderr demshot -s "$T/pulse.yaml" --accuracy fine --dump-scene
+	[ "$status" -eq 0 ]
+	grep -q "rule: full" <<< "$output"
+	grep -q "end: 1e-06 s" <<< "$output"
+}
+
+@test "demshot: an inverted element stops the run with exit 3, naming element and time, and leaves no file" {
+	# a huge pressure on a soft elastic block crushes the loaded elements
+	sed -e '/yield/d' -e '/hardening/d' -e 's/pressure: 1 GPa/pressure: 1000 GPa/' "$T/pulse.yaml" > "$T/crush.yaml"
+	run --separate-stderr demshot -s "$T/crush.yaml" --end 5us -o "$T/crush.state"
+	echo "$stderr"
+	[ "$status" -eq 3 ]
+	[[ ${stderr_lines[-1]} == "demshot: "*"element "*"t = "* ]] || [[ ${stderr_lines[-1]} == "demshot: "*"element"*"time"* ]]
+	[ ! -e "$T/crush.state" ]
+	# on stdout the stream is cut before its trailer: demprofile refuses it
+	run --separate-stderr bash -c "demshot -s '$T/crush.yaml' --end 5us -q | demprofile; echo \"\${PIPESTATUS[*]}\""
+	[ "${lines[-1]}" = "3 1" ]
+}
+
+@test "demshot: scene errors are bad input naming the key and its place" {
+	sed '/end:/d' "$T/pulse.yaml" > "$T/noend.yaml"
+	run --separate-stderr demshot -s "$T/noend.yaml"
+	[ "$status" -eq 1 ]
+	[[ $stderr == *"run.end"*"missing"* ]]
+	sed 's/element: 0.1 mm/elemnt: 0.1 mm/' "$T/pulse.yaml" > "$T/typo.yaml"
+	run --separate-stderr demshot -s "$T/typo.yaml"
+	[ "$status" -eq 1 ]
+	[[ $stderr == *"block.element: missing"* ]]
+	sed 's/frames: 2/frames: 2\n  framez: 3/' "$T/pulse.yaml" > "$T/typo2.yaml"
+	run --separate-stderr demshot -s "$T/typo2.yaml"
+	echo "$stderr"
+	[ "$status" -eq 1 ]
+	[[ $stderr == *"typo2.yaml:21:3: unknown key 'run.framez'"* ]]
+	sed 's/area: \[0.4 mm, 0.4 mm\]/area: [0.01 mm, 0.01 mm]/; s/center:.*//' "$T/pulse.yaml" > "$T/tiny.yaml"
+	printf 'load:\n  pressure: 1 GPa\n  area: [0.01 mm, 0.01 mm]\n  center: [0.05 mm, 0.05 mm]\n' > "$T/tinyload"
+	sed '/^load:/,/factors/d' "$T/pulse.yaml" | cat - "$T/tinyload" > "$T/tiny.yaml"
+	run --separate-stderr demshot -s "$T/tiny.yaml"
+	echo "$stderr"
+	[ "$status" -eq 1 ]
+	[[ $stderr == *"no face of the top"* ]]
+}
+
+@test "demshot: usage errors exit 2" {
+	usage_error demshot -s "$T/pulse.yaml" --rule twopoint
+	usage_error demshot -s "$T/pulse.yaml" --threads 0
+	usage_error demshot -s "$T/pulse.yaml" stray
+	usage_error demshot --bogus
+}
+
+@test "valgrind: demshot | demprofile run clean" {
+	[ "${DEM_SANITIZE:-}" != 1 ] || skip "sanitizer build: ASan and valgrind do not mix"
+	command -v valgrind >/dev/null || skip "valgrind is not installed"
+	vg="valgrind -q --error-exitcode=9 --leak-check=full --errors-for-leak-kinds=definite"
+	run --separate-stderr bash -c "$vg demshot -s '$T/col.yaml' --end 1us --threads 1 -q | $vg demprofile; echo \"\${PIPESTATUS[*]}\""
+	echo "$stderr"
+	[ "${lines[-1]}" = "0 0" ]
+}
