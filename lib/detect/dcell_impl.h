@@ -81,6 +81,10 @@ static int FN(map)(const dem_boxes_t *b, const grid_t *g, RAW *raw,
 	return !far;
 }
 
+#ifndef GATHER_AHEAD
+#define GATHER_AHEAD 16
+#endif
+
 /* Fetch the boxes in cell order; the migration bits come back from the
  * group in the sort key. */
 static void FN(gather)(const RAW *raw, const sorted_t *s, size_t n, ENT *ent)
@@ -88,6 +92,12 @@ static void FN(gather)(const RAW *raw, const sorted_t *s, size_t n, ENT *ent)
 	for (size_t k = 0; k < n; k++) {
 		uint32_t i = sorted_idx(s, k);
 		ENT *r = &ent[k];
+		/* the boxes come in random order: ask for one a little ahead
+		 * so that its cache miss overlaps this work */
+#if GATHER_AHEAD > 0
+		if (k + GATHER_AHEAD < n)
+			__builtin_prefetch(&raw[sorted_idx(s, k + GATHER_AHEAD)]);
+#endif
 		for (int d = 0; d < DIM; d++) {
 			r->lo[d] = raw[i].lo[d];
 			r->hi[d] = raw[i].hi[d];

@@ -133,8 +133,7 @@ YAML
 	echo "$stderr"
 	[ "$status" -eq 1 ]
 	[[ $stderr == *"typo2.yaml:21:3: unknown key 'run.framez'"* ]]
-	sed 's/area: \[0.4 mm, 0.4 mm\]/area: [0.01 mm, 0.01 mm]/; s/center:.*//' "$T/pulse.yaml" > "$T/tiny.yaml"
-	printf 'load:\n  pressure: 1 GPa\n  area: [0.01 mm, 0.01 mm]\n  center: [0.05 mm, 0.05 mm]\n' > "$T/tinyload"
+	printf 'load:\n  pressure: 1 GPa\n  area: [0.01 mm, 0.01 mm]\n  center: [0.1 mm, 0.1 mm]\n' > "$T/tinyload"
 	sed '/^load:/,/factors/d' "$T/pulse.yaml" | cat - "$T/tinyload" > "$T/tiny.yaml"
 	run --separate-stderr demshot -s "$T/tiny.yaml"
 	echo "$stderr"
