@@ -3,6 +3,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 /* The hardening table: two sequences of one length. */
 static int read_table(dem_scene_t *s, dem_mat_param_t *p, double **ep,
@@ -110,4 +111,76 @@ out:
 	free(ep);
 	free(sy);
 	return rc;
+}
+
+int dem_scene_block(dem_scene_t *s, dem_mesh_t *m, dem_error_t *e)
+{
+	static const char *const bcs[] = {"free", "fixed", "normal", NULL};
+	static const char *const face_key[6] = {
+		"block.bc.xmin", "block.bc.xmax", "block.bc.ymin",
+		"block.bc.ymax", "block.bc.bottom", "block.bc.top"
+	};
+	static const int face_def[6] = {DEM_BC_NORMAL, DEM_BC_NORMAL,
+		DEM_BC_NORMAL, DEM_BC_NORMAL, DEM_BC_FIXED, DEM_BC_FREE};
+	double size[3] = {NAN, NAN, NAN}, fine[2], h = NAN, depth, ratio, hmax;
+	dem_axis_t ax[3];
+	dem_bc_t bc[6];
+	int a, f, rc;
+
+	if ((rc = dem_scene_vector(s, "block.size", DEM_DIM_LENGTH, 3, NULL,
+				   DEM_SCENE_GT0, HUGE_VAL, size, e)) ||
+	    (rc = dem_scene_quantity(s, "block.element", DEM_DIM_LENGTH, NAN,
+				     DEM_SCENE_GT0, HUGE_VAL, &h, e)))
+		return rc;
+	if (isnan(size[0]))
+		return dem_scene_error(s, "block.size", e, "missing: the block "
+				       "needs its size [x, y, thickness]");
+	if (isnan(h))
+		return dem_scene_error(s, "block.element", e, "missing: the "
+				       "block needs the element size under the "
+				       "impact area");
+	if ((rc = dem_scene_vector(s, "block.fine", DEM_DIM_LENGTH, 2, size,
+				   DEM_SCENE_GT0, HUGE_VAL, fine, e)) ||
+	    (rc = dem_scene_quantity(s, "block.fine_depth", DEM_DIM_LENGTH,
+				     size[2], DEM_SCENE_GT0, HUGE_VAL, &depth,
+				     e)) ||
+	    (rc = dem_scene_quantity(s, "block.ratio", DEM_DIM_NONE, 1.2, 1,
+				     10, &ratio, e)) ||
+	    (rc = dem_scene_quantity(s, "block.max_element", DEM_DIM_LENGTH, 0,
+				     0, HUGE_VAL, &hmax, e)))
+		return rc;
+	for (a = 0; a < 2; a++)
+		if (fine[a] > size[a])
+			return dem_scene_error(s, "block.fine", e, "the fine "
+					       "region (%g m along %c) is larger "
+					       "than the block (%g m)", fine[a],
+					       "xy"[a], size[a]);
+	if (depth > size[2])
+		return dem_scene_error(s, "block.fine_depth", e, "%g m is deeper "
+				       "than the block (%g m)", depth, size[2]);
+	if (hmax != 0 && hmax < h)
+		return dem_scene_error(s, "block.max_element", e, "%g m is "
+				       "smaller than the element size (%g m)",
+				       hmax, h);
+	for (a = 0; a < 2; a++)
+		ax[a] = (dem_axis_t){-size[a] / 2, size[a] / 2, -fine[a] / 2,
+				     fine[a] / 2, h, ratio, hmax};
+	ax[2] = (dem_axis_t){-size[2], 0, -depth, 0, h, ratio, hmax};
+	for (f = 0; f < 6; f++) {
+		int v;
+
+		if ((rc = dem_scene_choice(s, face_key[f], bcs, face_def[f], &v,
+					   e)))
+			return rc;
+		bc[f] = (dem_bc_t)v;
+	}
+	if (dem_mesh_box(m, ax, e)) {
+		char msg[sizeof e->msg];
+
+		memcpy(msg, e->msg, sizeof msg);
+		dem_error_clear(e);
+		return dem_scene_error(s, "block", e, "%s", msg);
+	}
+	dem_mesh_set_bc(m, bc);
+	return DEM_OK;
 }

@@ -22,6 +22,7 @@
 #define DEM_FE_FESCENE_H
 
 #include "fe/material.h"
+#include "fe/mesh.h"
 #include "io/scene.h"
 
 /* Read the material section and build the material.  need_rho: the
@@ -29,5 +30,25 @@
  * Errors are DEM_EINPUT naming file:line:col. */
 int dem_scene_material(dem_scene_t *s, int need_rho, dem_mat_t *m,
 		       dem_error_t *e);
+
+/* The `block` section: demshot's workpiece, a box meshed finely under the
+ * impact area and graded outside it and through the thickness (Figs. 7.13
+ * and 8.3), x and y centred on 0, z from -thickness to 0 (the top face,
+ * z = 0, is the peened surface):
+ *
+ *   block:
+ *     size: [8 mm, 8 mm, 4 mm]   # x, y extent and thickness (required)
+ *     element: 0.05 mm           # element size in the fine region (required)
+ *     fine: [5.6 mm, 5.6 mm]     # fine region in x and y, centred (default: all)
+ *     fine_depth: 1 mm           # its depth below the top (default: all)
+ *     ratio: 1.2                 # geometric growth outside it (default 1.2)
+ *     max_element: 1 mm          # largest element (default: no cap)
+ *     bc:                        # per face: fixed | normal | free
+ *       xmin: normal             # the four sides default to normal
+ *       bottom: fixed            # (default fixed)
+ *       top: free                # (default free)
+ *
+ * Builds the mesh with its constraints; DEM_EINPUT naming the key. */
+int dem_scene_block(dem_scene_t *s, dem_mesh_t *m, dem_error_t *e);
 
 #endif

@@ -20,6 +20,8 @@
 #include <stddef.h>
 
 #include "core/error.h"
+#include "fe/mesh.h"
+#include "io/stream.h"
 
 /* One pass's profile, in SI units. */
 typedef struct dem_profile {
@@ -51,5 +53,64 @@ void dem_profile_free(dem_profile_t *p);
  * output pointer may be NULL. */
 void dem_profile_eval(const dem_profile_t *p, double depth, double sig[6],
 		      double eps[6], double *ep);
+
+/* ---- writing (demprofile) ------------------------------------------------ */
+
+/* Initialise h as a profile stream's header: kind, version and the columns
+ * above, in that order.  The caller adds its metadata lines, opens a
+ * dem_writer on it, writes each pass with dem_profile_write (passes
+ * increasing) and closes the writer. */
+void dem_profile_header(dem_header_t *h);
+/* Room for n depth points (zeroed), pass 0; DEM_EIO without memory. */
+int dem_profile_alloc(dem_profile_t *p, size_t n, dem_error_t *e);
+/* Write p's rows (one per depth point).  Refuses (DEM_EINPUT) depths not
+ * strictly increasing or negative, and values that are not finite. */
+int dem_profile_write(dem_writer_t *w, const dem_profile_t *p, dem_error_t *e);
+
+/* ---- profiles and surface metrics of a state frame (demprofile) --------- */
+
+/* What to average and how.  The region is a rectangle of the x-y plane; an
+ * element is in it when its centroid (reference coordinates) is, bounds
+ * included.  Depth is measured from the top face of the block (its highest
+ * reference z) down. */
+typedef struct dem_profile_opts {
+	double lo[2], hi[2];    /* the region */
+	double bin;             /* > 0: depth bins [k bin, (k+1) bin); 0: element layers */
+	double threshold;       /* surface: indentation (m) that counts as dimpled */
+} dem_profile_opts_t;
+
+/* One frame's profile: for each element layer (structured mesh only) or
+ * depth bin holding at least one element of the region, the volume-
+ * weighted mean and standard deviation of the 13 fields over those
+ * elements, and their number.  A layer's depth is its centroid's; a bin's
+ * is the volume-weighted mean depth of its elements' centroids.  When the
+ * elements of a point all hold the same value the mean is that value
+ * exactly and the spread 0.  p is allocated here (dem_profile_free);
+ * p->pass is 0.  DEM_EINPUT when no element is in the region, or for
+ * layers without a grid. */
+int dem_profile_compute(const dem_mesh_t *m, const double *sig,
+			const double *eps, const double *ep,
+			const dem_profile_opts_t *o, dem_profile_t *p,
+			dem_error_t *e);
+
+/* Surface metrics of a frame, over the top faces of the region's top-layer
+ * elements (structured mesh only).  The indentation of a top node is -uz;
+ * each node stands for a quarter of each region face around it (the
+ * trapezoidal rule). */
+typedef struct dem_surface {
+	double area;            /* top area of the region, m^2 */
+	double coverage;        /* share of it indented deeper than the threshold */
+	double depth_max;       /* deepest indentation, m (0 if none) */
+	double depth_mean;      /* mean of the whole dimples' deepest points, m */
+	double radius;          /* mean of their equivalent radii sqrt(A / pi), m */
+	double ra;              /* roughness Ra: mean |uz - mean uz|, m */
+	size_t dimples;         /* whole dimples: patches of indented nodes (joined
+				 * along grid lines) that do not reach the region's edge */
+	size_t patches;         /* every indented patch, cut ones included */
+} dem_surface_t;
+
+int dem_surface_compute(const dem_mesh_t *m, const double *u,
+			const dem_profile_opts_t *o, dem_surface_t *s,
+			dem_error_t *e);
 
 #endif

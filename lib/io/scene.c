@@ -34,7 +34,7 @@
  * it here. */
 static const char *const known_sections[] = {
 	"pack", "detect", "shot", "block", "material", "contact", "run",
-	"profile", "form", "plate", "output", "meta", NULL
+	"load", "profile", "form", "plate", "output", "meta", NULL
 };
 
 enum node_kind { NODE_SCALAR, NODE_SEQ, NODE_MAP };

@@ -255,6 +255,55 @@ static void test_material_scene(void **state)
 	dem_error_clear(&e);
 }
 
+
+/* The block section: the Ch. 7.5 block and its default constraints. */
+static void test_block_scene(void **state)
+{
+	dem_scene_t *s;
+	dem_mesh_t m;
+	dem_error_t e = {0};
+	int i, nf = 0;
+
+	(void)state;
+	s = scene("block:\n  size: [8 mm, 8 mm, 4 mm]\n  element: 0.25 mm\n"
+		  "  fine: [2 mm, 2 mm]\n  fine_depth: 1 mm\n  ratio: 1.3\n");
+	assert_int_equal(dem_scene_block(s, &m, &e), DEM_OK);
+	assert_true(fabs(m.gx[0] + 4e-3) < 1e-18 && fabs(m.gx[m.nx] - 4e-3) < 1e-18);
+	assert_true(m.gz[m.nz] == 0 && fabs(m.gz[0] + 4e-3) < 1e-18);
+	for (i = 0; i < m.nx; i++)
+		nf += fabs(m.gx[i + 1] - m.gx[i] - 2.5e-4) < 1e-12;
+	assert_int_equal(nf, 8);
+	/* top layers are fine: 4 elements in the first mm */
+	for (i = 0; i < 4; i++)
+		assert_true(fabs(m.gz[m.nz - i] - m.gz[m.nz - i - 1] - 2.5e-4) < 1e-12);
+	/* bottom fixed, sides normal, top free */
+	assert_int_equal(m.fix[dem_mesh_node(&m, 1, 1, 0)], 7);
+	assert_int_equal(m.fix[dem_mesh_node(&m, 0, 1, 1)], DEM_FIX_X);
+	assert_int_equal(m.fix[dem_mesh_node(&m, 1, m.ny, 1)], DEM_FIX_Y);
+	assert_int_equal(m.fix[dem_mesh_node(&m, 1, 1, m.nz)], 0);
+	assert_int_equal(m.fix[dem_mesh_node(&m, 0, 0, m.nz)], DEM_FIX_X | DEM_FIX_Y);
+	dem_mesh_free(&m);
+	dem_scene_free(s);
+	/* errors name the key and its place */
+	s = scene("block:\n  size: [8 mm, 8 mm, 4 mm]\n  element: 0.25 mm\n"
+		  "  fine: [9 mm, 2 mm]\n");
+	assert_int_equal(dem_scene_block(s, &m, &e), DEM_EINPUT);
+	assert_non_null(strstr(e.msg, ":4:"));
+	assert_non_null(strstr(e.msg, "larger than the block"));
+	dem_scene_free(s);
+	dem_error_clear(&e);
+	s = scene("block:\n  size: [8 mm, 8 mm, 4 mm]\n  element: 0.25 mm\n"
+		  "  bc:\n    top: glued\n");
+	assert_int_equal(dem_scene_block(s, &m, &e), DEM_EINPUT);
+	assert_non_null(strstr(e.msg, "block.bc.top"));
+	dem_scene_free(s);
+	dem_error_clear(&e);
+	s = scene("block:\n  element: 0.25 mm\n");
+	assert_int_equal(dem_scene_block(s, &m, &e), DEM_EINPUT);
+	assert_non_null(strstr(e.msg, "block.size"));
+	dem_scene_free(s);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -264,6 +313,7 @@ int main(void)
 		cmocka_unit_test(test_axis_errors),
 		cmocka_unit_test(test_mesh_box),
 		cmocka_unit_test(test_material_scene),
+		cmocka_unit_test(test_block_scene),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

@@ -830,7 +830,7 @@ static void test_check_sections(void **state)
 	assert_int_equal(dem_scene_check(s, pack_only, &e), DEM_EINPUT);
 	assert_string_equal(e.msg, "strip.yaml:5:1: unknown section 'pakc'; "
 			    "known sections: pack, detect, shot, block, "
-			    "material, contact, run, profile, form, plate, "
+			    "material, contact, run, load, profile, form, plate, "
 			    "output, meta");
 	dem_scene_free(s);
 	dem_error_clear(&e);
@@ -873,7 +873,7 @@ static void test_check_override(void **state)
 	assert_int_equal(dem_scene_check(s, NULL, &e), DEM_EUSAGE);
 	assert_string_equal(e.msg, "command line: --blob: unknown section "
 			    "'blob'; known sections: pack, detect, shot, block, "
-			    "material, contact, run, profile, form, plate, "
+			    "material, contact, run, load, profile, form, plate, "
 			    "output, meta");
 	dem_scene_free(s);
 }

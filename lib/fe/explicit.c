@@ -1,0 +1,900 @@
+/* explicit.c - explicit dynamics of the finite element block (see
+ * explicit.h).
+ *
+ * Layout.  Node data are arrays of 3 doubles per node (x, v, internal and
+ * external forces).  The one-point element state is kept in blocks of NB
+ * consecutive elements with the element innermost (sig[6][NB], ep[NB],
+ * Qs[12][NB]), the layout of the hex8 and material batch kernels; a block
+ * never straddles two slabs, so the last block of a slab may be short and
+ * is padded with copies of its last element, whose forces are dropped (the
+ * padding lanes see the same inputs as the element they copy and keep the
+ * same state).  The full-integration state is per element: two batches of
+ * four Gauss points, sig[2][6][NB], ep[2][NB].
+ *
+ * Slabs.  Elements are numbered i fastest, then j, then k, so a slab of
+ * whole k-layers is a contiguous range of elements.  Adjacent slabs share
+ * a plane of nodes; slabs two apart share none, so all even slabs can add
+ * their forces at once, then all odd ones.
+ */
+#include "fe/explicit.h"
+
+#include <math.h>
+#include <omp.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/cost.h"
+#include "fe/hex8.h"
+
+#define NB DEM_HEX8_NB
+#define NCHUNK 64     /* node chunks of the node loop (fixed: see header) */
+#define MAXSLAB 32    /* slabs of element layers */
+#define PAR_MIN 20000 /* fewer elements than this: one thread by default */
+
+enum { S_T, S_WXA, S_WXB, S_WDA, S_WDB, S_N };   /* node-loop sums */
+enum { E_INT, E_PL, E_HG, E_NPL, E_N };          /* element-loop sums */
+
+typedef struct slab {
+	size_t e0, e1;     /* elements [e0, e1) */
+	size_t b0, nb;     /* one-point blocks [b0, b0 + nb) */
+	int k0, k1;        /* element layers [k0, k1) */
+	double sum[E_N];   /* this step's element sums */
+	double dt2;        /* least squared step estimate (large strain) */
+	size_t bad;        /* 1 + first bad element, 0 if none */
+} slab_t;
+
+typedef struct pload {
+	size_t nq, nt;
+	uint32_t *quad;
+	double *t, *p;
+} pload_t;
+
+struct dem_fe {
+	const dem_mesh_t *mesh;
+	const dem_mat_t *mat;
+	dem_fe_opts_t o;
+	size_t nn, ne;
+	double *x, *v, *fi, *fx, *mass;
+	/* element state */
+	size_t nblk;
+	double *sig, *ep, *Qs, *eps, *kdt;
+	int hg;               /* hourglass control on */
+	int nthr;             /* threads */
+	int nslab;
+	slab_t *slab;
+	int *slab_of_k;
+	double chunk[NCHUNK][S_N];
+	/* loads */
+	pload_t *pl;
+	int npl;
+	dem_fe_load_fn hook;
+	void *hctx;
+	int ext;              /* external forces this step */
+	/* time */
+	double t, dt_prev, dt_stable;
+	long steps;
+	/* energies */
+	double T0, wx_acc, wd_acc, eint, epl, ehg;
+	dem_fe_energy_t en;
+	/* failure */
+	int failed;
+	dem_error_t fail;
+	/* counters */
+	double cycles, nplastic, elem_s, node_s;
+};
+
+void dem_fe_opts_default(dem_fe_opts_t *o)
+{
+	memset(o, 0, sizeof *o);
+	o->rule = DEM_FE_1PT;
+	o->large = 0;
+	o->dt_factor = 0.9;
+	o->damping = 0;
+	o->hg_stiff = 0.1;
+	o->hg_visc = 0;
+}
+
+double dem_fe_damping_alpha(const dem_mat_t *m, double xi, double H)
+{
+	double cs = sqrt(m->G / m->rho);
+	return 2 * xi * 3.14159265358979323846 * cs / (2 * H);
+}
+
+/* ---- Set-up --------------------------------------------------------------- */
+
+/* Largest |c_k|^2 of the mid-section modes k = 1..3: |c_k| / 2 is the area
+ * of the element's mid-section normal to natural axis k (exact for a
+ * parallelepiped). */
+static double midsection2(const double c[8][3])
+{
+	double m = 0;
+	for (int k = 1; k <= 3; k++) {
+		double s = c[k][0] * c[k][0] + c[k][1] * c[k][1] + c[k][2] * c[k][2];
+		m = s > m ? s : m;
+	}
+	return m;
+}
+
+static void elem_ijk(const dem_mesh_t *m, size_t el, int *i, int *j, int *k)
+{
+	*i = (int)(el % (size_t)m->nx);
+	*j = (int)(el / (size_t)m->nx % (size_t)m->ny);
+	*k = (int)(el / ((size_t)m->nx * (size_t)m->ny));
+}
+
+/* block and lane of a one-point element */
+static void elem_lane(const dem_fe_t *fe, size_t el, size_t *blk, int *lane)
+{
+	const slab_t *s = &fe->slab[fe->slab_of_k[el / ((size_t)fe->mesh->nx * (size_t)fe->mesh->ny)]];
+	size_t loc = el - s->e0;
+	*blk = s->b0 + loc / NB;
+	*lane = (int)(loc % NB);
+}
+
+void dem_fe_free(dem_fe_t *fe)
+{
+	if (!fe)
+		return;
+	free(fe->x), free(fe->v), free(fe->fi), free(fe->fx), free(fe->mass);
+	free(fe->sig), free(fe->ep), free(fe->Qs), free(fe->eps), free(fe->kdt);
+	free(fe->slab), free(fe->slab_of_k);
+	for (int i = 0; i < fe->npl; i++)
+		free(fe->pl[i].quad), free(fe->pl[i].t), free(fe->pl[i].p);
+	free(fe->pl);
+	free(fe);
+}
+
+int dem_fe_create(dem_fe_t **out, const dem_mesh_t *mesh, const dem_mat_t *mat,
+		  const dem_fe_opts_t *o, dem_error_t *e)
+{
+	*out = NULL;
+	if (o->rule != DEM_FE_1PT && o->rule != DEM_FE_FULL)
+		return dem_error_set(e, DEM_EINPUT, "explicit: unknown integration rule %d", (int)o->rule);
+	if (!(o->dt_factor > 0 && o->dt_factor <= 1))
+		return dem_error_set(e, DEM_EINPUT, "explicit: time step factor must be in (0, 1], got %g",
+				     o->dt_factor);
+	if (!(o->damping >= 0) || !isfinite(o->damping))
+		return dem_error_set(e, DEM_EINPUT, "explicit: damping must be >= 0, got %g", o->damping);
+	if (!(o->hg_stiff >= 0) || !(o->hg_visc >= 0) || !isfinite(o->hg_stiff + o->hg_visc))
+		return dem_error_set(e, DEM_EINPUT, "explicit: hourglass coefficients must be >= 0");
+	if (o->threads < 0)
+		return dem_error_set(e, DEM_EINPUT, "explicit: threads must be >= 0, got %d", o->threads);
+	if (!(mat->rho > 0))
+		return dem_error_set(e, DEM_EINPUT, "explicit: the material needs a density");
+	if (mesh->ne == 0 || mesh->nx < 1 || mesh->ny < 1 || mesh->nz < 1)
+		return dem_error_set(e, DEM_EINPUT, "explicit: empty mesh");
+
+	dem_fe_t *fe = calloc(1, sizeof *fe);
+	if (!fe)
+		return dem_error_nomem(e, "explicit model");
+	fe->mesh = mesh;
+	fe->mat = mat;
+	fe->o = *o;
+	fe->nn = mesh->nn;
+	fe->ne = mesh->ne;
+	fe->hg = o->rule == DEM_FE_1PT && (o->hg_stiff > 0 || o->hg_visc > 0);
+	size_t nn = fe->nn, ne = fe->ne;
+	fe->nthr = o->threads > 0 ? o->threads : ne >= PAR_MIN ? omp_get_max_threads() : 1;
+
+	/* slabs of whole layers */
+	int nz = mesh->nz;
+	size_t lay = (size_t)mesh->nx * (size_t)mesh->ny;
+	fe->nslab = nz < MAXSLAB ? nz : MAXSLAB;
+	fe->slab = calloc((size_t)fe->nslab, sizeof *fe->slab);
+	fe->slab_of_k = malloc((size_t)nz * sizeof *fe->slab_of_k);
+	if (!fe->slab || !fe->slab_of_k)
+		goto nomem;
+	size_t nblk = 0;
+	for (int s = 0; s < fe->nslab; s++) {
+		slab_t *sl = &fe->slab[s];
+		sl->k0 = (int)((long)s * nz / fe->nslab);
+		sl->k1 = (int)((long)(s + 1) * nz / fe->nslab);
+		sl->e0 = (size_t)sl->k0 * lay;
+		sl->e1 = (size_t)sl->k1 * lay;
+		sl->b0 = nblk;
+		sl->nb = (sl->e1 - sl->e0 + NB - 1) / NB;
+		nblk += sl->nb;
+		for (int k = sl->k0; k < sl->k1; k++)
+			fe->slab_of_k[k] = s;
+	}
+	fe->nblk = nblk;
+
+	fe->x = malloc(3 * nn * sizeof *fe->x);
+	fe->v = calloc(3 * nn, sizeof *fe->v);
+	fe->fi = calloc(3 * nn, sizeof *fe->fi);
+	fe->fx = calloc(3 * nn, sizeof *fe->fx);
+	fe->mass = calloc(nn, sizeof *fe->mass);
+	if (!fe->x || !fe->v || !fe->fi || !fe->fx || !fe->mass)
+		goto nomem;
+	memcpy(fe->x, mesh->X, 3 * nn * sizeof *fe->x);
+	if (o->rule == DEM_FE_1PT) {
+		fe->sig = calloc(nblk * 6 * NB, sizeof *fe->sig);
+		fe->ep = calloc(nblk * NB, sizeof *fe->ep);
+		fe->Qs = calloc(nblk * 12 * NB, sizeof *fe->Qs);
+		if (o->large) {
+			fe->eps = calloc(nblk * 6 * NB, sizeof *fe->eps);
+			fe->kdt = calloc(nblk * NB, sizeof *fe->kdt);
+		}
+	} else {
+		fe->sig = calloc(ne * 2 * 6 * NB, sizeof *fe->sig);
+		fe->ep = calloc(ne * 2 * NB, sizeof *fe->ep);
+		if (o->large) {
+			fe->eps = calloc(ne * 6, sizeof *fe->eps);
+			fe->kdt = calloc(ne, sizeof *fe->kdt);
+		}
+	}
+	if (!fe->sig || !fe->ep || (o->rule == DEM_FE_1PT && !fe->Qs) ||
+	    (o->large && (!fe->eps || !fe->kdt)))
+		goto nomem;
+
+	/* masses, element steps and their shape factors */
+	double dtmin = INFINITY;
+	for (size_t el = 0; el < ne; el++) {
+		double xe[24], me[8], dte;
+		dem_hex8_1pt_t g;
+		dem_mesh_gather(mesh, el, NULL, xe);
+		if (dem_hex8_lumped_mass(xe, mat->rho, me) || dem_hex8_1pt_geom(xe, &g) ||
+		    dem_hex8_dt_crit(xe, mat->wave, &dte)) {
+			int i, j, k;
+			elem_ijk(mesh, el, &i, &j, &k);
+			dem_fe_free(fe);
+			return dem_error_set(e, DEM_EINPUT, "explicit: element %zu (i, j, k = %d, %d, %d) "
+					     "of the mesh is inverted or degenerate", el, i, j, k);
+		}
+		for (int I = 0; I < 8; I++)
+			fe->mass[mesh->hex[8 * el + I]] += me[I];
+		dtmin = dte < dtmin ? dte : dtmin;
+		if (o->large) {
+			/* dt^2 = kdt (V / |c|max)^2, exact at the start */
+			double r = g.vol * g.vol / midsection2(g.c);
+			if (o->rule == DEM_FE_1PT) {
+				size_t b;
+				int l;
+				elem_lane(fe, el, &b, &l);
+				fe->kdt[b * NB + l] = dte * dte / r;
+			} else {
+				fe->kdt[el] = dte * dte / r;
+			}
+		}
+	}
+	/* padding lanes copy their block's last element */
+	if (o->rule == DEM_FE_1PT && o->large)
+		for (int s = 0; s < fe->nslab; s++) {
+			slab_t *sl = &fe->slab[s];
+			size_t n = sl->e1 - sl->e0, b = sl->b0 + sl->nb - 1;
+			for (size_t l = n - (sl->nb - 1) * NB; l < NB; l++)
+				fe->kdt[b * NB + l] = fe->kdt[b * NB + (n - 1) % NB];
+		}
+	fe->dt_stable = o->dt_factor * dtmin;
+	*out = fe;
+	return DEM_OK;
+nomem:
+	dem_fe_free(fe);
+	return dem_error_nomem(e, "explicit model");
+}
+
+/* ---- Loads ---------------------------------------------------------------- */
+
+int dem_fe_add_pressure(dem_fe_t *fe, size_t nquad, const uint32_t *quad,
+			size_t nt, const double *t, const double *p, dem_error_t *e)
+{
+	if (nt < 1)
+		return dem_error_set(e, DEM_EINPUT, "pressure: empty time history");
+	for (size_t i = 0; i < nt; i++) {
+		if (!isfinite(t[i]) || !isfinite(p[i]))
+			return dem_error_set(e, DEM_EINPUT, "pressure: time history point %zu is not finite", i);
+		if (i > 0 && t[i] < t[i - 1])
+			return dem_error_set(e, DEM_EINPUT, "pressure: times must not decrease "
+					     "(point %zu: %g after %g)", i, t[i], t[i - 1]);
+	}
+	for (size_t q = 0; q < 4 * nquad; q++)
+		if (quad[q] >= fe->nn)
+			return dem_error_set(e, DEM_EINPUT, "pressure: face %zu names node %u of %zu",
+					     q / 4, quad[q], fe->nn);
+	pload_t *pl = realloc(fe->pl, (size_t)(fe->npl + 1) * sizeof *pl);
+	if (!pl)
+		return dem_error_nomem(e, "pressure load");
+	fe->pl = pl;
+	pl = &fe->pl[fe->npl];
+	memset(pl, 0, sizeof *pl);
+	pl->quad = malloc((4 * nquad + 1) * sizeof *pl->quad);
+	pl->t = malloc(nt * sizeof *pl->t);
+	pl->p = malloc(nt * sizeof *pl->p);
+	if (!pl->quad || !pl->t || !pl->p) {
+		free(pl->quad), free(pl->t), free(pl->p);
+		return dem_error_nomem(e, "pressure load");
+	}
+	memcpy(pl->quad, quad, 4 * nquad * sizeof *quad);
+	memcpy(pl->t, t, nt * sizeof *t);
+	memcpy(pl->p, p, nt * sizeof *p);
+	pl->nq = nquad;
+	pl->nt = nt;
+	fe->npl++;
+	return DEM_OK;
+}
+
+size_t dem_fe_top_quads(const dem_mesh_t *m, double x0, double x1, double y0,
+			double y1, uint32_t *quad)
+{
+	size_t n = 0;
+	for (int j = 0; j < m->ny; j++)
+		for (int i = 0; i < m->nx; i++) {
+			double xc = 0.5 * (m->gx[i] + m->gx[i + 1]);
+			double yc = 0.5 * (m->gy[j] + m->gy[j + 1]);
+			if (xc < x0 || xc > x1 || yc < y0 || yc > y1)
+				continue;
+			if (quad) {
+				/* counter-clockwise seen from +z, outside the top */
+				uint32_t *q = quad + 4 * n;
+				q[0] = (uint32_t)dem_mesh_node(m, i, j, m->nz);
+				q[1] = (uint32_t)dem_mesh_node(m, i + 1, j, m->nz);
+				q[2] = (uint32_t)dem_mesh_node(m, i + 1, j + 1, m->nz);
+				q[3] = (uint32_t)dem_mesh_node(m, i, j + 1, m->nz);
+			}
+			n++;
+		}
+	return n;
+}
+
+void dem_fe_set_load(dem_fe_t *fe, dem_fe_load_fn fn, void *ctx)
+{
+	fe->hook = fn;
+	fe->hctx = ctx;
+}
+
+static double history(const pload_t *pl, double t)
+{
+	size_t n = pl->nt;
+	if (t < pl->t[0])
+		return pl->p[0];
+	if (t >= pl->t[n - 1])
+		return pl->p[n - 1];
+	/* the last point with t_i <= t: a repeated time takes its right value */
+	size_t lo = 0, hi = n - 1;
+	while (hi - lo > 1) {
+		size_t mid = (lo + hi) / 2;
+		if (pl->t[mid] <= t)
+			lo = mid;
+		else
+			hi = mid;
+	}
+	double w = (t - pl->t[lo]) / (pl->t[hi] - pl->t[lo]);
+	return pl->p[lo] + w * (pl->p[hi] - pl->p[lo]);
+}
+
+static void apply_pressure(dem_fe_t *fe, const pload_t *pl, double t)
+{
+	double p = history(pl, t);
+	if (p == 0)
+		return;
+	const double *x = fe->o.large ? fe->x : fe->mesh->X;
+	for (size_t q = 0; q < pl->nq; q++) {
+		const uint32_t *n = pl->quad + 4 * q;
+		double d1[3], d2[3];
+		for (int c = 0; c < 3; c++) {
+			d1[c] = x[3 * (size_t)n[2] + c] - x[3 * (size_t)n[0] + c];
+			d2[c] = x[3 * (size_t)n[3] + c] - x[3 * (size_t)n[1] + c];
+		}
+		/* area vector (d1 x d2) / 2; a quarter to each node, inward */
+		double s = -0.125 * p;
+		double f[3] = { s * (d1[1] * d2[2] - d1[2] * d2[1]),
+				s * (d1[2] * d2[0] - d1[0] * d2[2]),
+				s * (d1[0] * d2[1] - d1[1] * d2[0]) };
+		for (int I = 0; I < 4; I++)
+			for (int c = 0; c < 3; c++)
+				fe->fx[3 * (size_t)n[I] + c] += f[c];
+	}
+}
+
+/* ---- Node loop ------------------------------------------------------------ */
+
+typedef struct coef {
+	double dt, dtp;      /* dt_{n+1}, dt_n */
+	double co, cf, rden; /* v+ = (co v- + cf F / m) rden */
+	double w1, w0;       /* v_n = w1 v+ + w0 v- (Eq. 1.3) */
+	double k0, k1;       /* kinetic energy 1/2 m (k0 v- + k1 v+) v+ */
+	double rdth;         /* 1 / dt_{n+1/2} */
+	double alpha;
+} coef_t;
+
+static inline void node_range(dem_fe_t *fe, const coef_t *c, size_t n0, size_t n1,
+			      double sum[S_N], const int ext)
+{
+	const uint8_t *fix = fe->mesh->fix;
+	double *restrict x = fe->x, *restrict v = fe->v, *restrict fi = fe->fi;
+	double *restrict fx = fe->fx;
+	const double *restrict mass = fe->mass;
+	double T = 0, wxa = 0, wxb = 0, wda = 0, wdb = 0;
+	for (size_t n = n0; n < n1; n++) {
+		double m = mass[n], rm = c->cf / m;
+		unsigned fb = fix[n];
+		for (int k = 0; k < 3; k++) {
+			size_t d = 3 * n + k;
+			double fext = ext ? fx[d] : 0;
+			double F = fext - fi[d];
+			double vm = v[d];
+			int fixed = fb >> k & 1;
+			double vp = fixed ? vm : (c->co * vm + rm * F) * c->rden;
+			double vn = c->w1 * vp + c->w0 * vm;
+			double dua = c->dtp * vm, dub = c->dt * vp;
+			double fd = c->alpha * m * vn;
+			/* the force the loads apply: on a constrained dof, the
+			 * reaction too (mass times acceleration, damping and
+			 * internal force minus the loads) */
+			double fa = fixed ? m * (vp - vm) * c->rdth + fd + fi[d] : fext;
+			T += m * (c->k0 * vm + c->k1 * vp) * vp;
+			wda += fd * dua;
+			wdb += fd * dub;
+			wxa += fa * dua;
+			wxb += fa * dub;
+			v[d] = vp;
+			x[d] += dub;
+			fi[d] = 0;
+			if (ext)
+				fx[d] = 0;
+		}
+	}
+	sum[S_T] = 0.5 * T;
+	sum[S_WXA] = 0.5 * wxa;
+	sum[S_WXB] = 0.5 * wxb;
+	sum[S_WDA] = 0.5 * wda;
+	sum[S_WDB] = 0.5 * wdb;
+}
+
+static void node_chunk(dem_fe_t *fe, const coef_t *c, int ch)
+{
+	size_t n0 = fe->nn * (size_t)ch / NCHUNK, n1 = fe->nn * (size_t)(ch + 1) / NCHUNK;
+	if (fe->ext)
+		node_range(fe, c, n0, n1, fe->chunk[ch], 1);
+	else
+		node_range(fe, c, n0, n1, fe->chunk[ch], 0);
+}
+
+/* ---- Element loops ---------------------------------------------------------- */
+
+/* Jaumann rotation of a strain with engineering shears over dt (the
+ * rotation of dem_mat_jaumann, on the tensor eps_ij = gamma_ij / 2). */
+static inline void rotate_strain(double e[6], double a, double b, double c)
+{
+	double e0 = e[0], e1 = e[1], e2 = e[2], g3 = e[3], g4 = e[4], g5 = e[5];
+	e[0] += a * g3 - c * g5;
+	e[1] += b * g4 - a * g3;
+	e[2] += c * g5 - b * g4;
+	e[3] += 2 * a * (e1 - e0) - c * g4 + b * g5;
+	e[4] += 2 * b * (e2 - e1) - a * g5 + c * g3;
+	e[5] += 2 * c * (e0 - e2) - b * g3 + a * g4;
+}
+
+static inline void slab_1pt(dem_fe_t *fe, slab_t *s, double dt, const int large, const int hg)
+{
+	const dem_mat_t *m = fe->mat;
+	const uint32_t *restrict hex = fe->mesh->hex;
+	const double *restrict xs = large ? fe->x : fe->mesh->X;
+	const double *restrict vs = fe->v;
+	double *restrict fi = fe->fi;
+	double kaps = fe->o.hg_stiff, kapv = fe->o.hg_visc;
+	dem_hex8_batch_t b;
+	double xb[24 * NB], vb[24 * NB], fb[24 * NB], Q[12 * NB], P[NB], wp[NB], s0[6 * NB];
+	double eint = 0, epl = 0, ehg = 0, npl = 0, dt2 = INFINITY;
+	size_t bad = 0;
+	for (size_t bl = 0; bl < s->nb; bl++) {
+		size_t el0 = s->e0 + bl * NB;
+		int nv = s->e1 - el0 < NB ? (int)(s->e1 - el0) : NB;
+		const uint32_t *h[NB];
+		for (int e = 0; e < NB; e++)
+			h[e] = hex + 8 * (el0 + (size_t)(e < nv ? e : nv - 1));
+		for (int I = 0; I < 8; I++)
+			for (int e = 0; e < NB; e++) {
+				size_t n = 3 * (size_t)h[e][I];
+				for (int c = 0; c < 3; c++) {
+					xb[(8 * c + I) * NB + e] = xs[n + c];
+					vb[(8 * c + I) * NB + e] = vs[n + c];
+				}
+			}
+		unsigned badm = dem_hex8_batch_kin(&b, xb, vb);
+		if (badm) {
+			/* leave the block as it was; report its first bad element */
+			for (int e = 0; e < nv; e++)
+				if (badm >> e & 1) {
+					if (!bad)
+						bad = el0 + (size_t)e + 1;
+					break;
+				}
+			continue;
+		}
+		size_t B = s->b0 + bl;
+		double *sg = fe->sig + B * 6 * NB, *ep = fe->ep + B * NB;
+		memcpy(s0, sg, sizeof s0);
+		unsigned pm = dem_mat_update_batch(m, dt, b.d[0], large ? b.w[0] : NULL, sg, ep, wp);
+		if (hg) {
+			double *qs = fe->Qs + B * 12 * NB;
+			double qo[NB] = { 0 }, qn[NB] = { 0 };
+			for (int i = 0; i < 12; i++)
+				for (int e = 0; e < NB; e++)
+					qo[e] += qs[i * NB + e] * b.q[i][e];
+			dem_hex8_batch_hg(&b, m, kaps, kapv, dt, qs, Q, P);
+			for (int i = 0; i < 12; i++)
+				for (int e = 0; e < NB; e++)
+					qn[e] += qs[i * NB + e] * b.q[i][e];
+			/* work of the mean of the old and new stiffness forces
+			 * (trapezoidal, like the stress work) and the viscous ones */
+			for (int e = 0; e < nv; e++)
+				ehg += dt * (P[e] - 0.5 * (qn[e] - qo[e]));
+		}
+		dem_hex8_batch_force(&b, sg, hg ? Q : NULL, fb);
+		for (int e = 0; e < nv; e++) {
+			for (int I = 0; I < 8; I++) {
+				size_t n = 3 * (size_t)h[e][I];
+				fi[n] += fb[I * NB + e];
+				fi[n + 1] += fb[(8 + I) * NB + e];
+				fi[n + 2] += fb[(16 + I) * NB + e];
+			}
+			double w = 0;
+			for (int k = 0; k < 6; k++)
+				w += (s0[k * NB + e] + sg[k * NB + e]) * b.d[k][e];
+			eint += 0.5 * dt * b.vol[e] * w;
+			epl += b.vol[e] * wp[e];
+			npl += pm >> e & 1;
+		}
+		if (large) {
+			double *es = fe->eps + B * 6 * NB, *kd = fe->kdt + B * NB;
+			for (int e = 0; e < NB; e++) {
+				double ee[6];
+				for (int k = 0; k < 6; k++)
+					ee[k] = es[k * NB + e];
+				rotate_strain(ee, dt * b.w[0][e], dt * b.w[1][e], dt * b.w[2][e]);
+				for (int k = 0; k < 6; k++)
+					es[k * NB + e] = ee[k] + dt * b.d[k][e];
+				double cm = 0;
+				for (int k = 1; k <= 3; k++) {
+					double c2 = b.c[k][0][e] * b.c[k][0][e] + b.c[k][1][e] * b.c[k][1][e] +
+						    b.c[k][2][e] * b.c[k][2][e];
+					cm = c2 > cm ? c2 : cm;
+				}
+				double d2 = kd[e] * b.vol[e] * b.vol[e] / cm;
+				dt2 = d2 < dt2 ? d2 : dt2;
+			}
+		}
+	}
+	s->sum[E_INT] = eint;
+	s->sum[E_PL] = epl;
+	s->sum[E_HG] = ehg;
+	s->sum[E_NPL] = npl;
+	s->dt2 = dt2;
+	s->bad = bad;
+}
+
+static inline void slab_full(dem_fe_t *fe, slab_t *s, double dt, const int large)
+{
+	const dem_mat_t *m = fe->mat;
+	const uint32_t *restrict hex = fe->mesh->hex;
+	const double *restrict xs = large ? fe->x : fe->mesh->X;
+	const double *restrict vs = fe->v;
+	double *restrict fi = fe->fi;
+	dem_hex8_full_t g;
+	double eint = 0, epl = 0, npl = 0, dt2 = INFINITY;
+	size_t bad = 0;
+	for (size_t el = s->e0; el < s->e1; el++) {
+		const uint32_t *h = hex + 8 * el;
+		double xe[24], ve[24], f[24];
+		for (int I = 0; I < 8; I++)
+			for (int c = 0; c < 3; c++) {
+				xe[8 * c + I] = xs[3 * (size_t)h[I] + c];
+				ve[8 * c + I] = vs[3 * (size_t)h[I] + c];
+			}
+		if (dem_hex8_full_geom(xe, &g)) {
+			if (!bad)
+				bad = el + 1;
+			continue;
+		}
+		dem_hex8_full_rate(&g, ve, 1);
+		/* two batches of four Gauss points */
+		double D[2][6 * NB], W[2][3 * NB], wp[2][NB], s0[2 * 6 * NB];
+		for (int p = 0; p < 8; p++) {
+			double d[6], w[3];
+			dem_hex8_strain_rate(g.L[p], d, w);
+			for (int k = 0; k < 6; k++)
+				D[p / NB][k * NB + p % NB] = d[k];
+			for (int k = 0; k < 3; k++)
+				W[p / NB][k * NB + p % NB] = w[k];
+		}
+		double *sg = fe->sig + el * 2 * 6 * NB, *ep = fe->ep + el * 2 * NB;
+		memcpy(s0, sg, sizeof s0);
+		unsigned pm = 0;
+		for (int q = 0; q < 2; q++)
+			pm |= dem_mat_update_batch(m, dt, D[q], large ? W[q] : NULL, sg + q * 6 * NB,
+						   ep + q * NB, wp[q]) << (NB * q);
+		double sp[48], dm[6] = { 0 }, wm[3] = { 0 };
+		for (int p = 0; p < 8; p++) {
+			int q = p / NB, l = p % NB;
+			double w = 0;
+			for (int k = 0; k < 6; k++) {
+				double sn = sg[q * 6 * NB + k * NB + l];
+				sp[6 * p + k] = sn;
+				w += (s0[q * 6 * NB + k * NB + l] + sn) * D[q][k * NB + l];
+				dm[k] += g.wdet[p] * D[q][k * NB + l];
+			}
+			for (int k = 0; k < 3; k++)
+				wm[k] += g.wdet[p] * W[q][k * NB + l];
+			eint += 0.5 * dt * g.wdet[p] * w;
+			epl += g.wdet[p] * wp[q][l];
+		}
+		npl += __builtin_popcount(pm);
+		dem_hex8_full_force(&g, sp, 1, f);
+		for (int I = 0; I < 8; I++) {
+			size_t n = 3 * (size_t)h[I];
+			fi[n] += f[I];
+			fi[n + 1] += f[8 + I];
+			fi[n + 2] += f[16 + I];
+		}
+		if (large) {
+			double rv = 1 / g.vol, *es = fe->eps + 6 * el;
+			rotate_strain(es, dt * rv * wm[0], dt * rv * wm[1], dt * rv * wm[2]);
+			for (int k = 0; k < 6; k++)
+				es[k] += dt * rv * dm[k];
+			double d2 = fe->kdt[el] * g.vol * g.vol / midsection2(g.c);
+			dt2 = d2 < dt2 ? d2 : dt2;
+		}
+	}
+	s->sum[E_INT] = eint;
+	s->sum[E_PL] = epl;
+	s->sum[E_HG] = 0;
+	s->sum[E_NPL] = npl;
+	s->dt2 = dt2;
+	s->bad = bad;
+}
+
+/* the loop chosen once, before time stepping: effects are constants in
+ * each instance */
+static void slab_run(dem_fe_t *fe, slab_t *s, double dt)
+{
+	if (fe->o.rule == DEM_FE_FULL) {
+		if (fe->o.large)
+			slab_full(fe, s, dt, 1);
+		else
+			slab_full(fe, s, dt, 0);
+	} else if (fe->o.large) {
+		if (fe->hg)
+			slab_1pt(fe, s, dt, 1, 1);
+		else
+			slab_1pt(fe, s, dt, 1, 0);
+	} else {
+		if (fe->hg)
+			slab_1pt(fe, s, dt, 0, 1);
+		else
+			slab_1pt(fe, s, dt, 0, 0);
+	}
+}
+
+/* ---- The step -------------------------------------------------------------- */
+
+int dem_fe_step(dem_fe_t *fe, double dt, dem_error_t *e)
+{
+	if (fe->failed)
+		return dem_error_set(e, fe->fail.code, "%s", fe->fail.msg);
+	if (!(dt > 0) || !isfinite(dt))
+		dt = fe->dt_stable;
+	double tn = fe->t;
+
+	/* 1. external forces at t_n on x_n */
+	fe->ext = fe->npl > 0 || fe->hook;
+	if (fe->hook) {
+		int rc = fe->hook(fe->hctx, tn, dt, fe->x, fe->v, fe->fx, e);
+		if (rc) {
+			memset(fe->fx, 0, 3 * fe->nn * sizeof *fe->fx);
+			return rc;
+		}
+	}
+	for (int i = 0; i < fe->npl; i++)
+		apply_pressure(fe, &fe->pl[i], tn);
+
+	/* 2-3. velocities and coordinates (Eqs. 1.6-1.7; Eq. 1.9 to start) */
+	coef_t c;
+	double a = fe->o.damping, dtp = fe->dt_prev;
+	c.dt = dt;
+	c.dtp = dtp;
+	c.alpha = a;
+	if (fe->steps == 0) {
+		c.co = 2 - a * dt;
+		c.cf = dt;
+		c.rden = 0.5;
+		c.w1 = 0;
+		c.w0 = 1;
+		c.k0 = 2;    /* v_{-1/2} = 2 v_0 - v_{1/2} */
+		c.k1 = -1;
+		c.rdth = 2 / dt;
+	} else {
+		double dth = 0.5 * (dtp + dt);
+		c.co = 2 - a * dtp;
+		c.cf = 2 * dth;
+		c.rden = 1 / (2 + a * dt);
+		c.w1 = dt / (2 * dth);
+		c.w0 = dtp / (2 * dth);
+		c.k0 = 1;
+		c.k1 = 0;
+		c.rdth = 1 / dth;
+	}
+	int nthr = fe->nthr;
+	double w0 = dem_wall();
+#pragma omp parallel for schedule(static) num_threads(nthr) if (nthr > 1)
+	for (int ch = 0; ch < NCHUNK; ch++)
+		node_chunk(fe, &c, ch);
+	double w1 = dem_wall();
+
+	/* energies at t_n */
+	double sum[S_N] = { 0 };
+	for (int ch = 0; ch < NCHUNK; ch++)
+		for (int k = 0; k < S_N; k++)
+			sum[k] += fe->chunk[ch][k];
+	if (fe->steps == 0)
+		fe->T0 = sum[S_T];
+	dem_fe_energy_t *en = &fe->en;
+	en->t = tn;
+	en->kinetic = sum[S_T];
+	en->external = fe->wx_acc + sum[S_WXA];
+	en->damping = fe->wd_acc + sum[S_WDA];
+	en->internal = fe->eint;
+	en->plastic = fe->epl;
+	en->hourglass = fe->ehg;
+	en->balance = en->kinetic + en->internal + en->hourglass + en->damping - en->external - fe->T0;
+	en->scale = fmax(fmax(fmax(fabs(en->kinetic), fabs(fe->T0)), fmax(fabs(en->internal), fabs(en->hourglass))),
+			 fmax(fabs(en->damping), fabs(en->external)));
+	fe->wx_acc = en->external + sum[S_WXB];
+	fe->wd_acc = en->damping + sum[S_WDB];
+
+	/* 4. elements on x_{n+1}: even slabs, then odd slabs */
+#pragma omp parallel num_threads(nthr) if (nthr > 1)
+	for (int ph = 0; ph < 2; ph++) {
+#pragma omp for schedule(dynamic, 1)
+		for (int s = ph; s < fe->nslab; s += 2)
+			slab_run(fe, &fe->slab[s], dt);
+	}
+	double w2 = dem_wall();
+	fe->node_s += w1 - w0;
+	fe->elem_s += w2 - w1;
+
+	size_t bad = 0;
+	double dt2 = INFINITY;
+	for (int s = 0; s < fe->nslab; s++) {
+		slab_t *sl = &fe->slab[s];
+		fe->eint += sl->sum[E_INT];
+		fe->epl += sl->sum[E_PL];
+		fe->ehg += sl->sum[E_HG];
+		fe->nplastic += sl->sum[E_NPL];
+		dt2 = sl->dt2 < dt2 ? sl->dt2 : dt2;
+		if (sl->bad && !bad)
+			bad = sl->bad;
+	}
+	fe->t = tn + dt;
+	fe->dt_prev = dt;
+	fe->steps++;
+	fe->cycles += (double)fe->ne;
+	if (bad) {
+		int i, j, k;
+		size_t el = bad - 1;
+		elem_ijk(fe->mesh, el, &i, &j, &k);
+		fe->failed = 1;
+		dem_error_set(&fe->fail, DEM_ENUMERIC, "element %zu (i, j, k = %d, %d, %d) inverted or "
+			      "degenerate at t = %.9g s (step %ld)", el, i, j, k, fe->t, fe->steps);
+		return dem_error_set(e, DEM_ENUMERIC, "%s", fe->fail.msg);
+	}
+	if (fe->o.large)
+		fe->dt_stable = fe->o.dt_factor * sqrt(dt2);
+	return DEM_OK;
+}
+
+/* ---- State ------------------------------------------------------------------ */
+
+double dem_fe_dt(const dem_fe_t *fe)
+{
+	return fe->dt_stable;
+}
+
+double dem_fe_time(const dem_fe_t *fe)
+{
+	return fe->t;
+}
+
+long dem_fe_steps(const dem_fe_t *fe)
+{
+	return fe->steps;
+}
+
+const double *dem_fe_coords(const dem_fe_t *fe)
+{
+	return fe->x;
+}
+
+double *dem_fe_velocity(dem_fe_t *fe)
+{
+	return fe->v;
+}
+
+const double *dem_fe_mass(const dem_fe_t *fe)
+{
+	return fe->mass;
+}
+
+void dem_fe_displacements(const dem_fe_t *fe, double *u)
+{
+	for (size_t i = 0; i < 3 * fe->nn; i++)
+		u[i] = fe->x[i] - fe->mesh->X[i];
+}
+
+void dem_fe_fields(const dem_fe_t *fe, double *sig, double *eps, double *ep)
+{
+	const dem_mesh_t *m = fe->mesh;
+	for (size_t el = 0; el < fe->ne; el++) {
+		if (fe->o.rule == DEM_FE_1PT) {
+			size_t b;
+			int l;
+			elem_lane(fe, el, &b, &l);
+			for (int k = 0; k < 6; k++) {
+				if (sig)
+					sig[6 * el + k] = fe->sig[(b * 6 + k) * NB + l];
+				if (eps && fe->o.large)
+					eps[6 * el + k] = fe->eps[(b * 6 + k) * NB + l];
+			}
+			if (ep)
+				ep[el] = fe->ep[b * NB + l];
+		} else if (sig || ep) {
+			/* volume averages over the Gauss points */
+			double xe[24];
+			dem_hex8_full_t g;
+			const double *sg = fe->sig + el * 2 * 6 * NB, *eg = fe->ep + el * 2 * NB;
+			if (fe->o.large) {
+				const uint32_t *h = m->hex + 8 * el;
+				for (int I = 0; I < 8; I++)
+					for (int c = 0; c < 3; c++)
+						xe[8 * c + I] = fe->x[3 * (size_t)h[I] + c];
+			} else {
+				dem_mesh_gather(m, el, NULL, xe);
+			}
+			double wsum = 0, s6[6] = { 0 }, e1 = 0;
+			int ok = !dem_hex8_full_geom(xe, &g);
+			for (int p = 0; p < 8; p++) {
+				int q = p / NB, l = p % NB;
+				double w = ok ? g.wdet[p] : 1;
+				wsum += w;
+				for (int k = 0; k < 6; k++)
+					s6[k] += w * sg[q * 6 * NB + k * NB + l];
+				e1 += w * eg[q * NB + l];
+			}
+			for (int k = 0; k < 6; k++)
+				if (sig)
+					sig[6 * el + k] = s6[k] / wsum;
+			if (ep)
+				ep[el] = e1 / wsum;
+		}
+		if (eps && fe->o.large && fe->o.rule == DEM_FE_FULL)
+			memcpy(eps + 6 * el, fe->eps + 6 * el, 6 * sizeof *eps);
+		if (eps && !fe->o.large) {
+			/* B(X) u: the mean displacement gradient, which is also
+			 * the volume average of the Gauss point strains */
+			double xe[24], ue[24], w[3];
+			dem_hex8_1pt_t g;
+			const uint32_t *h = m->hex + 8 * el;
+			dem_mesh_gather(m, el, NULL, xe);
+			for (int I = 0; I < 8; I++)
+				for (int c = 0; c < 3; c++)
+					ue[8 * c + I] = fe->x[3 * (size_t)h[I] + c] - m->X[3 * (size_t)h[I] + c];
+			dem_hex8_1pt_geom(xe, &g);
+			dem_hex8_1pt_rate(&g, ue);
+			dem_hex8_strain_rate(g.L, eps + 6 * el, w);
+		}
+	}
+}
+
+void dem_fe_energy(const dem_fe_t *fe, dem_fe_energy_t *en)
+{
+	*en = fe->en;
+}
+
+void dem_fe_stats(const dem_fe_t *fe, dem_fe_stats_t *s)
+{
+	s->steps = fe->steps;
+	s->elem_cycles = fe->cycles;
+	s->plastic_updates = fe->nplastic;
+	s->elem_s = fe->elem_s;
+	s->node_s = fe->node_s;
+}

@@ -1,0 +1,208 @@
+/* test_contact_law.c - unit tests of lib/contact/law.c: the normal laws of
+ * Eq. 3.45 and the contact time step of Box 3.1 (Han 2004, Ch. 3.3, 3.7).
+ *
+ * References: Table 3.1 and Eqs. 3.28-3.29 (Hertz coefficient); Eq. 3.81
+ * (u_max by energy); Fig. 3.15 and the text of Ch. 3.7.2 (the exit
+ * velocity of the rigid-sphere/wall test is independent of M, k_n and v0;
+ * exact for the linear law at lambda = 1/sqrt(2); the Winkler law m = 2
+ * dissipates for lambda < 0.48; divergence above 0.5); and, for the linear
+ * law, the discrete energy of central differences: v_{n+1/2}^2 +
+ * omega^2 u_n u_{n+1} is conserved while in contact, so the exit speed is
+ * v0 / sqrt(1 - 4 lambda^2 s (1 - s)), s the fraction of the last step still
+ * in contact: at most v0 / sqrt(1 - lambda^2), exactly v0 when the discrete
+ * half period pi / (Omega dt) is a whole number of steps, cos(Omega dt) =
+ * 1 - 2 lambda^2, i.e. lambda = sin(pi / (2 N)).
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "contact/law.h"
+#include "contact/model.h"
+#include "core/consts.h"
+
+static void test_law_forms(void **state)
+{
+	(void)state;
+	dem_law_t l, h;
+	dem_error_t e = { 0 };
+	/* Eq. 3.45 */
+	assert_int_equal(dem_law_init(&l, 2.5, 68e9, 1.5, &e), DEM_OK);
+	assert_true(fabs(dem_law_kn(&l, 4e-4) - 2.5 * 68e9 * 0.02) < 1e-6);
+	assert_true(fabs(dem_law_force(&l, 10, 4.0) - 80) < 1e-12);
+	assert_true(fabs(dem_law_stiffness(&l, 10, 4.0) - 30) < 1e-12);
+	assert_true(dem_law_force(&l, 10, -1) == 0);
+	assert_int_equal(dem_law_init(&l, 1, 1, 2, &e), DEM_OK);
+	assert_true(fabs(dem_law_kn(&l, 3) - 3) < 1e-15);
+	assert_int_equal(dem_law_init(&l, 1, 1, 2.5, &e), DEM_OK);
+	assert_true(fabs(dem_law_kn(&l, 4) - 8) < 1e-12);
+	assert_true(fabs(dem_law_force(&l, 1, 4) - 32) < 1e-12);
+	/* Hertz (Eq. 3.29) is Eq. 3.45 with alpha = 4 / (3 (1 - nu^2)) */
+	assert_int_equal(dem_law_hertz(&h, 68e9, 0.33, &e), DEM_OK);
+	assert_int_equal(dem_law_init(&l, 4 / (3 * (1 - 0.33 * 0.33)), 68e9, 1.5, &e), DEM_OK);
+	assert_true(fabs(dem_law_kn(&h, 5e-4) - dem_law_kn(&l, 5e-4)) < 1e-9 * dem_law_kn(&h, 5e-4));
+	assert_true(fabs(dem_law_estar(68e9, 0.33, INFINITY, 0.3) - 68e9 / (1 - 0.33 * 0.33)) < 1);
+	assert_true(fabs(dem_law_estar(1, 0, 1, 0) - 0.5) < 1e-15);
+	/* bad input is refused with a message */
+	assert_int_equal(dem_law_init(&l, 0, 68e9, 1.5, &e), DEM_EINPUT);
+	assert_non_null(strstr(e.msg, "alpha"));
+	dem_error_clear(&e);
+	assert_int_equal(dem_law_init(&l, 1, 68e9, 0.5, &e), DEM_EINPUT);
+	dem_error_clear(&e);
+	assert_int_equal(dem_law_init(&l, 1, NAN, 1, &e), DEM_EINPUT);
+	dem_error_clear(&e);
+	assert_int_equal(dem_law_hertz(&h, 68e9, 0.5, &e), DEM_EINPUT);
+}
+
+static void test_energy_loss_params(void **state)
+{
+	(void)state;
+	for (double m = 1; m <= 2; m += 0.5) {
+		double r = dem_hyst_unload_ratio(0.7, m);
+		assert_true(fabs(dem_hyst_restitution(r, m) - 0.7) < 1e-12);
+		assert_true(fabs(pow(1 / r, 1 / (2 * m)) - 0.7) < 1e-12);  /* Eq. 3.67 */
+	}
+	assert_true(fabs(dem_visc_restitution_linear(0) - 1) < 1e-15);
+	assert_true(fabs(dem_visc_xi_linear(dem_visc_restitution_linear(0.3)) - 0.3) < 1e-12);
+	assert_true(fabs(dem_contact_meff(2, 2) - 1) < 1e-15);
+	assert_true(dem_contact_meff(2, INFINITY) == 2);
+}
+
+static void test_dt_functions(void **state)
+{
+	(void)state;
+	/* Eq. 3.81 stores the kinetic energy: k u^(m+1)/(m+1) = M v^2/2 */
+	for (double m = 1; m <= 2; m += 0.5) {
+		double u = dem_dt_umax(m, 3, 2, 5);
+		assert_true(fabs(3 * pow(u, m + 1) / (m + 1) - 25) < 1e-9);
+		/* from a state part way through, the same u_max */
+		double uu = 0.4 * u, v = sqrt((25 - 3 * pow(uu, m + 1) / (m + 1)) * 2 / 2);
+		assert_true(fabs(dem_dt_umax_state(m, 3, 2, uu, v) - u) < 1e-12 * u);
+		/* Eq. 3.80: secant, tangent at the top */
+		assert_true(fabs(dem_dt_secant(m, 3, u, 0) - 3 * pow(u, m - 1)) < 1e-12 * pow(u, m - 1) * 3);
+		assert_true(fabs(dem_dt_secant(m, 3, u, u) - 3 * m * pow(u, m - 1)) < 1e-12 * pow(u, m - 1) * 3 * m);
+		double s = dem_dt_secant(m, 3, u, 0.5 * u);
+		assert_true(fabs(s - 3 * (pow(u, m) - pow(0.5 * u, m)) / (0.5 * u)) < 1e-12 * s);
+	}
+	assert_true(fabs(dem_dt_step(0.2, 4, 1) - 0.8) < 1e-15);
+	assert_true(dem_dt_step(0.2, 4, 0) == HUGE_VAL);
+}
+
+static void test_lambda_check(void **state)
+{
+	(void)state;
+	char msg[256];
+	assert_int_equal(dem_dt_lambda_check(DEM_DT_LAMBDA_DEFAULT, 0, msg, sizeof msg), DEM_LAMBDA_OK);
+	assert_int_equal(dem_dt_lambda_check(0.3, 0, msg, sizeof msg), DEM_LAMBDA_OK);
+	assert_int_equal(dem_dt_lambda_check(0.35, 0, msg, sizeof msg), DEM_LAMBDA_WARN);
+	assert_non_null(strstr(msg, "0.35"));
+	assert_int_equal(dem_dt_lambda_check(0.5, 0, msg, sizeof msg), DEM_LAMBDA_WARN);
+	assert_int_equal(dem_dt_lambda_check(0.6, 0, msg, sizeof msg), DEM_LAMBDA_REFUSED);
+	assert_non_null(strstr(msg, "force"));
+	assert_int_equal(dem_dt_lambda_check(0.6, 1, msg, sizeof msg), DEM_LAMBDA_FORCED);
+	assert_int_equal(dem_dt_lambda_check(0, 1, msg, sizeof msg), DEM_LAMBDA_INVALID);
+	assert_int_equal(dem_dt_lambda_check(-0.1, 0, msg, sizeof msg), DEM_LAMBDA_INVALID);
+	assert_int_equal(dem_dt_lambda_check(1.5, 1, msg, sizeof msg), DEM_LAMBDA_INVALID);
+	assert_int_equal(dem_dt_lambda_check(NAN, 1, msg, sizeof msg), DEM_LAMBDA_INVALID);
+}
+
+/* Box 3.1 sweep over (0, 0.3]: 300 values of lambda per law. */
+static void test_box31_sweep(void **state)
+{
+	(void)state;
+	const double ms[3] = { 1, 1.5, 2 };
+	for (int j = 0; j < 3; j++) {
+		double m = ms[j], worst = 0, wl = 0;
+		for (int i = 1; i <= 300; i++) {
+			double lambda = 0.3 * i / 300, umx;
+			long steps;
+			double r = dem_dt_wall_test(m, 1, 1, 1, lambda, &steps, &umx);
+			assert_true(isfinite(r));
+			if (r > worst)
+				worst = r, wl = lambda;
+			/* the linear law's bound, from its discrete energy */
+			assert_true(r <= 1 / sqrt(1 - lambda * lambda) * (1 + 1e-12));
+			/* the overshoot of u_max stays small (Eq. 3.81) */
+			assert_true(umx <= dem_dt_umax(m, 1, 1, 1) * (1 + lambda * lambda));
+			if (m == 2)
+				assert_true(r <= 1 + 1e-3);  /* the criterion */
+			/* and where the linear bound guarantees it, for every law */
+			if (1 / sqrt(1 - lambda * lambda) <= 1 + 1e-3)
+				assert_true(r <= 1 + 1e-3);
+		}
+		print_message("Box 3.1, m = %.1f: largest v_exit/v0 over lambda in (0, 0.3]: %.5f at %.3f\n",
+		              m, worst, wl);
+	}
+	/* Winkler: dissipative for lambda < 0.48 (Ch. 3.7.2) */
+	for (int i = 1; i < 48; i++)
+		assert_true(dem_dt_wall_test(2, 1, 1, 1, 0.01 * i, NULL, NULL) <= 1 + 1e-12);
+	/* linear: the exact points lambda = sin(pi/(2N)), 1/sqrt(2) among them */
+	for (int N = 2; N <= 40; N++) {
+		double r = dem_dt_wall_test(1, 1, 1, 1, sin(DEM_PI / (2 * N)), NULL, NULL);
+		assert_true(fabs(r - 1) < 1e-9);
+	}
+	/* independent of M, k_n and v0 (Ch. 3.7.2) */
+	for (int j = 0; j < 3; j++) {
+		double a = dem_dt_wall_test(ms[j], 1, 1, 1, 0.237, NULL, NULL);
+		double b = dem_dt_wall_test(ms[j], 3e9, 4e-6, 150, 0.237, NULL, NULL);
+		assert_true(fabs(a - b) < 1e-9);
+	}
+	/* above 0.5 energy is gained: at lambda = 1 every law diverges */
+	for (int j = 0; j < 3; j++)
+		assert_true(dem_dt_wall_test(ms[j], 1, 1, 1, 1.0, NULL, NULL) > 2);
+}
+
+/* The time step of a model: Box 3.1 secant, stiffer with hysteresis. */
+static void test_model_dt(void **state)
+{
+	(void)state;
+	dem_contact_param_t p = { .law = { .m = 1.5, .coef = 1 } };
+	dem_contact_model_t cm;
+	dem_error_t e = { 0 };
+	assert_int_equal(dem_contact_model_init(&cm, &p, &e), DEM_OK);
+	double u = dem_dt_umax(1.5, 2, 3, 4);
+	double dt = dem_contact_dt(&cm, 2, 3, 0, 4, 0.2);
+	assert_true(fabs(dt - 0.2 * 2 * sqrt(3 / (2 * sqrt(u)))) < 1e-12 * dt);
+	assert_true(dem_contact_dt(&cm, 2, 3, 0, 0, 0.2) == HUGE_VAL);
+	p.damping = DEM_DAMP_HYSTERESIS;
+	p.unload = 4;
+	assert_int_equal(dem_contact_model_init(&cm, &p, &e), DEM_OK);
+	double dth = dem_contact_dt(&cm, 2, 3, 0, 4, 0.2);
+	assert_true(fabs(dth - dt / sqrt(pow(4, 1 / 1.5))) < 1e-12 * dt);
+	/* bad parameters */
+	p.unload = 0.5;
+	assert_int_equal(dem_contact_model_init(&cm, &p, &e), DEM_EINPUT);
+	dem_error_clear(&e);
+	p.damping = DEM_DAMP_VISCOUS;
+	p.xi = 1;
+	assert_int_equal(dem_contact_model_init(&cm, &p, &e), DEM_EINPUT);
+	dem_error_clear(&e);
+	p.xi = 0.1;
+	p.friction = 1;
+	p.mu = -1;
+	assert_int_equal(dem_contact_model_init(&cm, &p, &e), DEM_EINPUT);
+	dem_error_clear(&e);
+	p.mu = 0.2;
+	assert_int_equal(dem_contact_model_init(&cm, &p, &e), DEM_OK);
+	assert_non_null(strstr(cm.effects, "friction mu=0.2"));
+	assert_non_null(strstr(cm.effects, "viscous"));
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_law_forms),
+		cmocka_unit_test(test_energy_loss_params),
+		cmocka_unit_test(test_dt_functions),
+		cmocka_unit_test(test_lambda_check),
+		cmocka_unit_test(test_box31_sweep),
+		cmocka_unit_test(test_model_dt),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
