@@ -33,6 +33,7 @@ struct dem_form {
 	cholmod_dense *b;
 	int step;
 	double fref;             /* largest step load so far (N) */
+	int large;               /* the last step was large strain */
 };
 
 /* ---- Plate mesh ----------------------------------------------------------- */
@@ -401,6 +402,7 @@ int dem_form_step(dem_form_t *f, const dem_form_opts_t *o, dem_form_stats_t *st,
 	if (o->ninc < 1 || o->maxit < 1 || !(o->tol > 0))
 		return dem_error_set(e, DEM_EINPUT, "form: bad solution controls");
 	f->step++;
+	f->large = o->large;
 	int rc;
 	if (!f->pattern_ok && (rc = build_system(f, e)))
 		return rc;
@@ -558,8 +560,17 @@ static int solve_small(int n, double *A, double *b)
 	return 0;
 }
 
-/* w on the bottom face at (x, y) by bilinear interpolation. */
-static double bottom_w(const dem_form_t *f, double x, double y)
+/* The deflection of the mid-surface at node (i, j): the mean of the top
+ * and bottom faces' w, free of the thickness change. */
+static double mid_w(const dem_form_t *f, int i, int j)
+{
+	const dem_mesh_t *m = f->mesh;
+	return 0.5 * (f->un[3 * dem_mesh_node(m, i, j, 0) + 2] +
+		      f->un[3 * dem_mesh_node(m, i, j, m->nz) + 2]);
+}
+
+/* Mid-surface w at (x, y) by bilinear interpolation. */
+static double surface_w(const dem_form_t *f, double x, double y)
 {
 	const dem_mesh_t *m = f->mesh;
 	int i = 0, j = 0;
@@ -571,9 +582,8 @@ static double bottom_w(const dem_form_t *f, double x, double y)
 	double t = (y - m->gy[j]) / (m->gy[j + 1] - m->gy[j]);
 	s = fmin(fmax(s, 0), 1);
 	t = fmin(fmax(t, 0), 1);
-	const double *u = f->un;
-	double w00 = u[3 * dem_mesh_node(m, i, j, 0) + 2], w10 = u[3 * dem_mesh_node(m, i + 1, j, 0) + 2];
-	double w01 = u[3 * dem_mesh_node(m, i, j + 1, 0) + 2], w11 = u[3 * dem_mesh_node(m, i + 1, j + 1, 0) + 2];
+	double w00 = mid_w(f, i, j), w10 = mid_w(f, i + 1, j);
+	double w01 = mid_w(f, i, j + 1), w11 = mid_w(f, i + 1, j + 1);
 	return (1 - s) * (1 - t) * w00 + s * (1 - t) * w10 + (1 - s) * t * w01 + s * t * w11;
 }
 
@@ -591,14 +601,18 @@ int dem_form_shape(const dem_form_t *f, double chord, int axis, double fx, doubl
 	for (int j = 0; j <= m->ny; j++)
 		for (int i = 0; i <= m->nx; i++) {
 			size_t n = dem_mesh_node(m, i, j, 0);
-			double w = f->un[3 * n + 2];
+			double w = mid_w(f, i, j);
 			wmin = fmin(wmin, w);
 			wmax = fmax(wmax, w);
 			double x = m->gx[i], y = m->gy[j];
 			if (fabs(x) > fx * L / 2 * (1 + 1e-12) || fabs(y) > fy * W / 2 * (1 + 1e-12))
 				continue;
-			x = (x + f->un[3 * n]) / sc;
-			y = (y + f->un[3 * n + 1]) / sc;
+			if (f->large) {  /* in the deformed configuration */
+				x += f->un[3 * n];
+				y += f->un[3 * n + 1];
+			}
+			x /= sc;
+			y /= sc;
 			double phi[6] = { 1, x, y, x * x, y * y, x * y };
 			for (int a = 0; a < 6; a++) {
 				b[a] += phi[a] * w;
@@ -614,8 +628,8 @@ int dem_form_shape(const dem_form_t *f, double chord, int axis, double fx, doubl
 	s->kxy = -b[5] / (sc * sc);
 	s->wmax = wmax - wmin;
 	double c2 = chord / 2;
-	s->arc = axis ? bottom_w(f, 0, 0) - 0.5 * (bottom_w(f, 0, -c2) + bottom_w(f, 0, c2))
-		      : bottom_w(f, 0, 0) - 0.5 * (bottom_w(f, -c2, 0) + bottom_w(f, c2, 0));
+	s->arc = axis ? surface_w(f, 0, 0) - 0.5 * (surface_w(f, 0, -c2) + surface_w(f, 0, c2))
+		      : surface_w(f, 0, 0) - 0.5 * (surface_w(f, -c2, 0) + surface_w(f, c2, 0));
 	return DEM_OK;
 }
 

@@ -127,14 +127,16 @@ const double *dem_form_disp(const dem_form_t *f);
 /* Histories of the last converged state (one per element). */
 const dem_hex8_hist_t *dem_form_hist(const dem_form_t *f);
 
-/* Out-of-plane results measured on the bottom face z = -h (the face an
- * Almen gauge rests on).  Curvatures k = -d2w/dx2 etc. fitted by least
- * squares to w = a + b x + c y - (kx x^2 + ky y^2 + 2 kxy x y)/2 over the
- * face's nodes with |x| <= fx L/2 and |y| <= fy W/2 (fx, fy in (0, 1]),
- * positive when the top (peened) face is convex.  Arc height over a chord
- * of length c along x (axis 0) or y (axis 1) through the centre: the
- * centre's w less the mean of the w at the chord's ends (interpolated
- * along the centre line); maximum deflection: max w - min w over the face. */
+/* Out-of-plane results of the mid-surface, whose deflection w is the mean
+ * of the top and bottom faces' (free of the change of thickness).
+ * Curvatures k = -d2w/dx2 etc. fitted by least squares to
+ *   w = a + b x + c y - (kx x^2 + ky y^2 + 2 kxy x y)/2
+ * over the nodes with |x| <= fx L/2 and |y| <= fy W/2 (fx, fy in (0, 1];
+ * x, y of the reference configuration in small strain, of the deformed one
+ * in large strain), positive when the top (peened) face is convex.  Arc
+ * height over a chord of length c along x (axis 0) or y (axis 1) through
+ * the centre: the centre's w less the mean of the w at the chord's ends
+ * (interpolated along the centre line); maximum deflection: max w - min w. */
 typedef struct dem_form_shape {
 	double kx, ky, kxy;
 	double arc;              /* over the chord */

@@ -36,32 +36,6 @@
 #define E_AL 72e9
 #define NU_AL 0.33
 
-/* dem_profile_eval() lives in lib/io/profile.c, written on another branch;
- * until it lands this is the contract's linear interpolation. */
-#ifndef HAVE_PROFILE_C
-void dem_profile_eval(const dem_profile_t *p, double depth, double sig[6],
-		      double eps[6], double *ep)
-{
-	size_t k = 0, k1;
-	double t = 0;
-	if (depth >= p->depth[p->n - 1]) {
-		k = p->n - 1;
-	} else if (depth > p->depth[0]) {
-		while (p->depth[k + 1] < depth)
-			k++;
-		t = (depth - p->depth[k]) / (p->depth[k + 1] - p->depth[k]);
-	}
-	k1 = k + 1 < p->n ? k + 1 : k;
-	for (int a = 0; a < 6; a++) {
-		if (sig)
-			sig[a] = (1 - t) * p->sig[6 * k + a] + t * p->sig[6 * k1 + a];
-		if (eps)
-			eps[a] = (1 - t) * p->eps[6 * k + a] + t * p->eps[6 * k1 + a];
-	}
-	if (ep)
-		*ep = (1 - t) * p->ep[k] + t * p->ep[k1];
-}
-#endif
 
 /* ---- The test profile ----------------------------------------------------------- */
 
