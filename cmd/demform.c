@@ -1,0 +1,512 @@
+/* demform - the implicit forming stage of peen forming (Ch. 8.5).
+ *
+ *   demform [OPTION]... [FILE]
+ *
+ * Reads residual profiles (a profile stream, FILE or standard input),
+ * applies them as initial stresses (or strains) with their effective
+ * plastic strain to a plate of hexahedra built from the scene, finds the
+ * equilibrium by Newton-Raphson (small or large strain, pseudo-load
+ * increments with cut-back), and prints the formed shape: arc height,
+ * curvatures, the stress through the thickness at the centre, the Newton
+ * log.  See demform(1).
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include <gsl/gsl_errno.h>
+
+#include "core/cli.h"
+#include "core/cost.h"
+#include "fe/fescene.h"
+#include "fe/implicit.h"
+#include "io/profile.h"
+#include "io/scene.h"
+#include "io/vtu.h"
+
+#define PROG "demform"
+#define MAXSTEP 9
+
+enum { OPT_LARGE = DEM_OPT_PROGRAM, OPT_INCREMENTS, OPT_INIT, OPT_CENTRE, OPT_PASS, OPT_VTU };
+
+static const dem_opt_t options[] = {
+	{"large", OPT_LARGE, NULL, "large strain (geometric nonlinearity; sets form.strain: large)"},
+	{"increments", OPT_INCREMENTS, "N", "initial load increments of each step (form.increments, default 1)"},
+	{"init", OPT_INIT, "WHAT", "initial condition: stress (default) or strain (form.init)"},
+	{"pass", OPT_PASS, "N", "use pass N of the profile stream (form.pass; default the last)"},
+	{"centre", OPT_CENTRE, "FILE", "write the stress through the thickness at the plate centre to FILE"},
+	{"vtu", OPT_VTU, "FILE", "write the formed plate (displacements, element stresses) as VTK XML to FILE"},
+	DEM_OPTS_COMMON,
+	{0}
+};
+
+static const char usage[] = "Usage: demform [OPTION]... [FILE]\n";
+static const char purpose[] =
+	"Form a plate with residual profiles (a profile stream, FILE or standard input)\n"
+	"as initial conditions (Ch. 8.5): implicit static Newton-Raphson, then print\n"
+	"the arc height, curvatures and Newton log as 'key: value' lines.\n";
+static const char epilogue[] =
+	"Examples:\n"
+	"  demprofile state.gz | demform -s strip.yaml\n"
+	"  demform -s strip.yaml --large --centre centre.txt profile.txt\n"
+	"\nSee demform(1), dem-scene(5) and dem-streams(5).\n";
+
+struct cmdline {
+	dem_common_t com;
+	const char *input;
+	const char *centre;
+	const char *vtu;
+};
+
+static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
+{
+	dem_cli_t c;
+	dem_common_t *m = &cl->com;
+	int k, done;
+
+	memset(cl, 0, sizeof *cl);
+	if (dem_common_init(m, argc) || dem_cli_init(&c, PROG, options, usage, purpose, epilogue))
+		return DEM_EIO;
+	while ((k = dem_cli_next(&c, argc, argv)) != -1) {
+		if (dem_cli_common(&c, k, optarg, m))
+			continue;
+		switch (k) {
+		case OPT_LARGE: dem_common_override(m, "form.strain", "large", "--large"); break;
+		case OPT_INCREMENTS: dem_common_override(m, "form.increments", optarg, "--increments"); break;
+		case OPT_INIT: dem_common_override(m, "form.init", optarg, "--init"); break;
+		case OPT_PASS: dem_common_override(m, "form.pass", optarg, "--pass"); break;
+		case OPT_CENTRE: cl->centre = optarg; break;
+		case OPT_VTU: cl->vtu = optarg; break;
+		default: break;
+		}
+	}
+	done = c.done;
+	if (done < 0) {
+		if (optind < argc)
+			cl->input = argv[optind++];
+		if (optind < argc)
+			dem_cli_error(&c, "unexpected argument '%s' (one input at most)", argv[optind]);
+		if (m->binary || m->gzip)
+			dem_cli_error(&c, "the summary is text: -b and -z do not apply");
+		if (dem_cli_finish(&c))
+			done = DEM_EUSAGE;
+	}
+	dem_cli_free(&c);
+	return done;
+}
+
+/* One profile of a step: where it goes and where it comes from. */
+struct app {
+	const char *file;       /* "-": the input */
+	long pass;              /* -1: the last */
+	double scale;
+	dem_form_region_t r;
+};
+
+struct step {
+	int napp;
+	struct app app[2];      /* top, bottom */
+	dem_bc_t bc[6];
+	int minimal;
+};
+
+struct settings {
+	dem_plate_t plate;
+	dem_form_opts_t opts;
+	int init;
+	double chord, fit[2];
+	int chord_axis;
+	long pass;
+	int nstep;
+	struct step step[MAXSTEP];
+};
+
+static int read_app(dem_scene_t *s, const char *base, int bottom, long pass, struct app *a,
+		    dem_error_t *e)
+{
+	char key[160];
+	double reg[4];
+	snprintf(key, sizeof key, "%s.file", base);
+	if (dem_scene_string(s, key, "-", &a->file, e))
+		return e->code;
+	snprintf(key, sizeof key, "%s.pass", base);
+	if (dem_scene_int(s, key, pass, -1, 1000000, &a->pass, e))
+		return e->code;
+	snprintf(key, sizeof key, "%s.scale", base);
+	if (dem_scene_quantity(s, key, DEM_DIM_NONE, 1, -1e6, 1e6, &a->scale, e))
+		return e->code;
+	snprintf(key, sizeof key, "%s.region", base);
+	a->r.bottom = bottom;
+	a->r.x0 = a->r.y0 = -HUGE_VAL;
+	a->r.x1 = a->r.y1 = HUGE_VAL;
+	if (dem_scene_has(s, key)) {
+		if (dem_scene_vector(s, key, DEM_DIM_LENGTH, 4, NULL, -HUGE_VAL, HUGE_VAL, reg, e))
+			return e->code;
+		if (!(reg[0] < reg[1] && reg[2] < reg[3]))
+			return dem_scene_error(s, key, e, "expected [x0, x1, y0, y1] with x0 < x1 "
+					       "and y0 < y1");
+		a->r.x0 = reg[0], a->r.x1 = reg[1], a->r.y0 = reg[2], a->r.y1 = reg[3];
+	}
+	return DEM_OK;
+}
+
+static int read_scene(dem_scene_t *s, int accuracy, struct settings *st, dem_error_t *e)
+{
+	static const char *const sections[] = {"plate", "form", "material", NULL};
+	static const char *const strains[] = {"small", "large", NULL};
+	static const char *const elems[] = {"full", "bbar", "eas", NULL};
+	static const char *const inits[] = {"stress", "strain", NULL};
+	static const char *const axes[] = {"x", "y", NULL};
+	static const char *const bcs[] = {"free", "fixed", "normal", NULL};
+	static const char *const faces[] = {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"};
+	static const double size0[3] = {0.150, 0.050, 0.004}, fit0[2] = {1, 1};
+	static const double tol0[3] = {1e-6, 1e-8, 1e-10};  /* --accuracy */
+	double size[3];
+	long nz, it, ninc, cuts;
+	int large, rule, two;
+
+	dem_plate_t *p = &st->plate;
+	if (dem_scene_vector(s, "plate.size", DEM_DIM_LENGTH, 3, size0, DEM_SCENE_GT0, HUGE_VAL, size, e) ||
+	    dem_scene_quantity(s, "plate.element", DEM_DIM_LENGTH, 0.005, DEM_SCENE_GT0, HUGE_VAL, &p->dxy, e) ||
+	    dem_scene_int(s, "plate.layers", 15, 1, 10000, &nz, e) ||
+	    dem_scene_quantity(s, "plate.grading", DEM_DIM_NONE, 1.2, 1, 10, &p->grade, e) ||
+	    dem_scene_bool(s, "plate.two_sided", 0, &two, e))
+		return e->code;
+	p->L = size[0], p->W = size[1], p->h = size[2];
+	p->nz = (int)nz;
+	p->two_sided = two;
+
+	dem_form_opts_t *o = &st->opts;
+	dem_form_opts_default(o);
+	if (dem_scene_choice(s, "form.strain", strains, 0, &large, e) ||
+	    dem_scene_choice(s, "form.element", elems, DEM_HEX8_EAS, &rule, e) ||
+	    dem_scene_choice(s, "form.init", inits, 0, &st->init, e) ||
+	    dem_scene_quantity(s, "form.tolerance", DEM_DIM_NONE, tol0[accuracy], 1e-15, 1e-2, &o->tol, e) ||
+	    dem_scene_int(s, "form.iterations", 12, 1, 1000, &it, e) ||
+	    dem_scene_int(s, "form.increments", 1, 1, 1000000, &ninc, e) ||
+	    dem_scene_int(s, "form.cutbacks", 10, 0, 50, &cuts, e) ||
+	    dem_scene_quantity(s, "form.chord", DEM_DIM_LENGTH, p->L, DEM_SCENE_GT0, HUGE_VAL, &st->chord, e) ||
+	    dem_scene_choice(s, "form.chord_axis", axes, 0, &st->chord_axis, e) ||
+	    dem_scene_vector(s, "form.fit", DEM_DIM_NONE, 2, fit0, DEM_SCENE_GT0, 1, st->fit, e) ||
+	    dem_scene_int(s, "form.pass", -1, -1, 1000000, &st->pass, e))
+		return e->code;
+	o->large = large;
+	o->rule = (dem_hex8_rule_t)rule;
+	o->maxit = (int)it;
+	o->ninc = (int)ninc;
+	o->maxcut = (int)cuts;
+	if (large && rule == DEM_HEX8_BBAR)
+		return dem_scene_error(s, "form.element", e, "bbar is small strain only");
+	if (st->chord > (st->chord_axis ? p->W : p->L) * (1 + 1e-12))
+		return dem_scene_error(s, "form.chord", e, "longer than the plate");
+
+	st->nstep = 0;
+	for (int k = 1; k <= MAXSTEP; k++) {
+		char base[16], key[64];
+		snprintf(base, sizeof base, "form.step%d", k);
+		if (!dem_scene_has(s, base))
+			break;
+		struct step *sp = &st->step[st->nstep++];
+		memset(sp, 0, sizeof *sp);
+		for (int b = 0; b < 2; b++) {
+			snprintf(key, sizeof key, "%s.%s", base, b ? "bottom" : "top");
+			if (dem_scene_has(s, key) && read_app(s, key, b, st->pass, &sp->app[sp->napp++], e))
+				return e->code;
+		}
+		int any = 0;
+		for (int f = 0; f < 6; f++) {
+			int c;
+			snprintf(key, sizeof key, "%s.bc.%s", base, faces[f]);
+			if (dem_scene_choice(s, key, bcs, 0, &c, e))
+				return e->code;
+			sp->bc[f] = (dem_bc_t)c;
+			any |= c != 0;
+		}
+		snprintf(key, sizeof key, "%s.minimal", base);
+		if (dem_scene_bool(s, key, !any, &sp->minimal, e))
+			return e->code;
+	}
+	if (st->nstep == 0) {   /* the default job: the input on the whole top face */
+		struct step *sp = &st->step[st->nstep++];
+		memset(sp, 0, sizeof *sp);
+		sp->napp = 1;
+		sp->minimal = 1;
+		struct app *a = &sp->app[0];
+		a->file = "-";
+		a->pass = st->pass;
+		a->scale = 1;
+		a->r.x0 = a->r.y0 = -HUGE_VAL;
+		a->r.x1 = a->r.y1 = HUGE_VAL;
+	}
+	return dem_scene_check(s, sections, e);
+}
+
+/* The input stream is read once (it may be standard input); steps may name
+ * other files. */
+struct inputs {
+	dem_profile_t *in;
+	int nin;
+};
+
+static int get_profile(struct inputs *ip, const char *input, const struct app *a,
+		       dem_profile_t *own, const dem_profile_t **out, dem_error_t *e)
+{
+	int rc;
+	if (strcmp(a->file, "-") == 0) {
+		if (!ip->in && (rc = dem_profile_read_all(input, &ip->in, &ip->nin, e)))
+			return rc;
+		if (ip->nin < 1)
+			return dem_error_set(e, DEM_EINPUT, "%s: no profile in the stream",
+					     input ? input : "stdin");
+		if (a->pass < 0) {
+			*out = &ip->in[ip->nin - 1];
+			return DEM_OK;
+		}
+		for (int k = 0; k < ip->nin; k++)
+			if (ip->in[k].pass == a->pass) {
+				*out = &ip->in[k];
+				return DEM_OK;
+			}
+		return dem_error_set(e, DEM_EINPUT, "%s: no pass %ld in the profile stream",
+				     input ? input : "stdin", a->pass);
+	}
+	if ((rc = dem_profile_read(a->file, (int)a->pass, own, e)))
+		return rc;
+	*out = own;
+	return DEM_OK;
+}
+
+struct logctx {
+	FILE *sum;              /* the summary (Newton log lines) */
+	int verbose;
+};
+
+static void newton_log(void *ctx, int step, int inc, double lambda, int iter, double rn,
+		       double rrel, double dun)
+{
+	struct logctx *c = ctx;
+	fprintf(c->sum, "newton: %d %d %.6g %d %.6e %.6e %.6e\n", step, inc, lambda, iter, rn,
+		rrel, dun);
+	if (c->verbose)
+		fprintf(stderr, "%s: step %d increment %d lambda %.4g iteration %d |R| %.3e N "
+			"(%.3e) |du| %.3e m\n", PROG, step, inc, lambda, iter, rn, rrel, dun);
+}
+
+/* Write text to path atomically (temporary name, then rename), or to
+ * standard output when path is NULL. */
+static int write_text(const char *path, const char *text, size_t len, dem_error_t *e)
+{
+	if (!path) {
+		fwrite(text, 1, len, stdout);
+		return DEM_OK;
+	}
+	size_t n = strlen(path) + 16;
+	char *tmp = malloc(n);
+	if (!tmp)
+		return dem_error_nomem(e, path);
+	snprintf(tmp, n, "%s.tmp%ld", path, (long)getpid());
+	FILE *f = fopen(tmp, "w");
+	int bad = !f || fwrite(text, 1, len, f) != len;
+	if (f && fclose(f))
+		bad = 1;
+	if (bad || rename(tmp, path)) {
+		remove(tmp);
+		free(tmp);
+		return dem_error_set(e, DEM_EIO, "%s: cannot write", path);
+	}
+	free(tmp);
+	return DEM_OK;
+}
+
+/* The plate for ParaView: displacements and the element means of the
+ * Gauss point stresses and effective plastic strains. */
+static int write_vtu(const char *path, const dem_form_t *f, const dem_mesh_t *m,
+		     dem_error_t *e)
+{
+	double *sig = malloc(6 * m->ne * sizeof *sig), *ep = malloc(m->ne * sizeof *ep);
+	if (!sig || !ep) {
+		free(sig), free(ep);
+		return dem_error_nomem(e, "VTU fields");
+	}
+	const dem_hex8_hist_t *h = dem_form_hist(f);
+	for (size_t el = 0; el < m->ne; el++) {
+		ep[el] = 0;
+		for (int k = 0; k < 6; k++)
+			sig[6 * el + k] = 0;
+		for (int p = 0; p < 8; p++) {
+			ep[el] += h[el].ep[p] / 8;
+			for (int k = 0; k < 6; k++)
+				sig[6 * el + k] += h[el].sig[6 * p + k] / 8;
+		}
+	}
+	dem_vtu_fields_t fl = {dem_form_disp(f), sig, NULL, ep};
+	int rc = dem_vtu_write(path, m, &fl, 1, e);
+	free(sig), free(ep);
+	return rc;
+}
+
+static int write_centre(const char *path, const dem_form_t *f, int nz, dem_error_t *e)
+{
+	int n;
+	size_t m = 2 * (size_t)nz;
+	double *d = malloc(m * sizeof *d), *s = malloc(6 * m * sizeof *s), *ep = malloc(m * sizeof *ep);
+	char *buf = NULL;
+	size_t len = 0;
+	FILE *mf = NULL;
+	int rc = DEM_OK;
+	if (!d || !s || !ep || !(mf = open_memstream(&buf, &len))) {
+		rc = dem_error_nomem(e, "centre profile");
+		goto out;
+	}
+	dem_form_centre_profile(f, &n, d, s, ep);
+	fprintf(mf, "# demform centre profile: stress through the thickness at the plate centre\n"
+		"# depth:m sxx:Pa syy:Pa szz:Pa sxy:Pa syz:Pa szx:Pa ep:-\n");
+	for (int i = 0; i < n; i++)
+		fprintf(mf, "%.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g\n", d[i], s[6 * i], s[6 * i + 1],
+			s[6 * i + 2], s[6 * i + 3], s[6 * i + 4], s[6 * i + 5], ep[i]);
+	fprintf(mf, "# end %d\n", n);
+	fclose(mf);
+	mf = NULL;
+	rc = write_text(path, buf, len, e);
+out:
+	free(buf), free(d), free(s), free(ep);
+	return rc;
+}
+
+int main(int argc, char **argv)
+{
+	struct cmdline cl;
+	struct settings set;
+	dem_error_t e = {0};
+	dem_scene_t *scene = NULL;
+	dem_mesh_t mesh = {0};
+	dem_mat_t mat = {0};
+	dem_form_t *form = NULL;
+	struct inputs ip = {0};
+	dem_form_stats_t st = {0};
+	dem_cost_t cost;
+	char *sbuf = NULL;
+	size_t slen = 0;
+	FILE *sum = NULL;
+	int rc;
+
+	dem_cost_start(&cost);
+	gsl_set_error_handler_off();
+	if ((rc = parse_cmdline(argc, argv, &cl)) >= 0) {
+		dem_common_free(&cl.com);
+		return rc;
+	}
+	if ((rc = dem_scene_load(&scene, cl.com.scene, &e)) ||
+	    (rc = dem_scene_override_all(scene, cl.com.ov, cl.com.nov, &e)) ||
+	    (rc = dem_scene_material(scene, 0, &mat, &e)) ||
+	    (rc = read_scene(scene, cl.com.accuracy, &set, &e)))
+		goto fail;
+	if (cl.com.dump) {
+		dem_scene_dump(scene, stdout);
+		goto done;
+	}
+	double t = dem_wall();
+	if ((rc = dem_plate_mesh(&set.plate, &mesh, &e)) ||
+	    (rc = dem_form_create(&form, &mesh, &mat, &e)))
+		goto fail;
+	dem_cost_time(&cost, "mesh", dem_wall() - t);
+	if (!(sum = open_memstream(&sbuf, &slen))) {
+		rc = dem_error_nomem(&e, "summary");
+		goto fail;
+	}
+	struct logctx lc = {sum, cl.com.verbose && !cl.com.quiet};
+	set.opts.log = newton_log;
+	set.opts.ctx = &lc;
+	fprintf(sum, "# demform %s summary; lengths in m, curvatures in 1/m, stresses in Pa\n",
+		DEM_VERSION);
+	fprintf(sum, "plate: %g %g %g\nelements: %zu\nnodes: %zu\nstrain: %s\nelement: %s\n",
+		set.plate.L, set.plate.W, set.plate.h, mesh.ne, mesh.nn,
+		set.opts.large ? "large" : "small",
+		set.opts.rule == DEM_HEX8_EAS ? "eas" : set.opts.rule == DEM_HEX8_BBAR ? "bbar" : "full");
+	fprintf(sum, "# newton: step increment lambda iteration |R|:N |R|/|F| |du|:m\n");
+
+	for (int k = 0; k < set.nstep; k++) {
+		struct step *sp = &set.step[k];
+		t = dem_wall();
+		for (int a = 0; a < sp->napp; a++) {
+			dem_profile_t own = {0};
+			const dem_profile_t *p = NULL;
+			rc = get_profile(&ip, cl.input, &sp->app[a], &own, &p, &e);
+			if (!rc)
+				rc = dem_form_profile(form, p, &sp->app[a].r,
+						      set.init ? DEM_FORM_STRAIN : DEM_FORM_SIGMA,
+						      sp->app[a].scale, &e);
+			dem_profile_free(&own);
+			if (rc)
+				goto fail;
+		}
+		dem_cost_time(&cost, "profile", dem_wall() - t);
+		dem_form_constrain(form, sp->bc, sp->minimal);
+		if ((rc = dem_form_step(form, &set.opts, &st, &e)))
+			goto fail;
+		dem_form_shape_t sh;
+		if ((rc = dem_form_shape(form, set.chord, set.chord_axis, set.fit[0], set.fit[1], &sh, &e)))
+			goto fail;
+		fprintf(sum, "step: %d\narc_height: %.9g\nchord: %.9g\nmax_deflection: %.9g\n"
+			"curvature_x: %.9g\ncurvature_y: %.9g\ncurvature_xy: %.9g\n"
+			"residual: %.6e\nresidual_rel: %.6e\nload: %.6e\n",
+			k + 1, sh.arc, set.chord, sh.wmax, sh.kx, sh.ky, sh.kxy, st.rnorm, st.rrel,
+			st.fnorm);
+		if (!cl.com.quiet && cl.com.verbose)
+			fprintf(stderr, "%s: step %d: arc height %.6g m, curvatures %.6g %.6g 1/m\n",
+				PROG, k + 1, sh.arc, sh.kx, sh.ky);
+	}
+	fprintf(sum, "increments: %d\ncutbacks: %d\niterations: %d\nfactorisations: %d\n",
+		st.increments, st.cutbacks, st.iterations, st.factorisations);
+	fclose(sum);
+	sum = NULL;
+	if (cl.centre && (rc = write_centre(cl.centre, form, mesh.nz, &e)))
+		goto fail;
+	if (cl.vtu && (rc = write_vtu(cl.vtu, form, &mesh, &e)))
+		goto fail;
+	if ((rc = write_text(cl.com.output, sbuf, slen, &e)))
+		goto fail;
+	dem_cost_time(&cost, "assemble", st.assemble_s);
+	dem_cost_time(&cost, "factor", st.factor_s);
+	dem_cost_time(&cost, "solve", st.solve_s);
+	dem_cost_count(&cost, "elements", (double)mesh.ne);
+	dem_cost_count(&cost, "equations", (double)st.neq);
+	dem_cost_count(&cost, "increments", st.increments);
+	dem_cost_count(&cost, "cutbacks", st.cutbacks);
+	dem_cost_count(&cost, "iterations", st.iterations);
+	dem_cost_count(&cost, "factorisations", st.factorisations);
+	dem_cost_count(&cost, "factor_nnz", st.lnz);
+done:
+	free(sbuf);
+	for (int k = 0; k < ip.nin; k++)
+		dem_profile_free(&ip.in[k]);
+	free(ip.in);
+	dem_form_free(form);
+	dem_mesh_free(&mesh);
+	dem_mat_free(&mat);
+	dem_scene_free(scene);
+	dem_common_free(&cl.com);
+	if (!cl.com.output && (rc = dem_cli_close_stdout(PROG)))
+		return rc;
+	if (!cl.com.dump)
+		dem_cost_print(&cost, PROG, stderr);
+	return 0;
+fail:
+	fprintf(stderr, "%s: %s\n", PROG, e.msg);
+	if (rc == DEM_EUSAGE)
+		fprintf(stderr, "Try '%s --help' for more information.\n", PROG);
+	if (sum)
+		fclose(sum);
+	free(sbuf);
+	for (int k = 0; k < ip.nin; k++)
+		dem_profile_free(&ip.in[k]);
+	free(ip.in);
+	dem_form_free(form);
+	dem_mesh_free(&mesh);
+	dem_mat_free(&mat);
+	dem_scene_free(scene);
+	dem_common_free(&cl.com);
+	return rc;
+}

@@ -1,0 +1,203 @@
+#!/usr/bin/env bats
+# Command-line tests of demform.  References: the free-plate closed form of
+# DESIGN.md (curvature -12 (1-nu) int s z dz / (E h^3), arc height about
+# kappa L^2 / 8) for an equi-biaxial stress profile; linearity of the
+# elastic problem (half the profile, half the curvature); symmetry (the same
+# profile on both faces bends nothing); the exit codes of DESIGN.md.  The
+# profile streams are written by awk; the profile is a made-up
+# shot-peening shape (it is the closed form that is the reference).
+
+bats_require_minimum_version 1.5.0
+load helpers
+
+setup() {
+	T=$BATS_TEST_TMPDIR
+	# depth (mm) and sxx = syy (MPa) of the profile; ep
+	cat > "$T/shape" <<-EOF
+	0 -300 0.05
+	0.1 -400 0.0375
+	0.2 -350 0.025
+	0.35 -150 0.0125
+	0.5 30 0
+	0.6 0 0
+	EOF
+	# pass 1: half the stresses, pass 2: the profile
+	profile_stream "$T/shape" > "$T/prof"
+	cat > "$T/el.yaml" <<-EOF
+	material: {E: 72 GPa, nu: 0.33}
+	EOF
+	cat > "$T/small.yaml" <<-EOF
+	material: {E: 72 GPa, nu: 0.33}
+	plate: {size: [60 mm, 20 mm, 4 mm], element: 10 mm, layers: 8, grading: 1.3}
+	EOF
+}
+
+# profile_stream SHAPE: a text profile stream with two passes of SHAPE.
+profile_stream() {
+	awk 'BEGIN {
+		print "# dem profile 1"
+		printf "# columns pass:u32:- depth:f64:m sxx:f64:Pa syy:f64:Pa szz:f64:Pa sxy:f64:Pa syz:f64:Pa szx:f64:Pa"
+		printf " exx:f64:- eyy:f64:- ezz:f64:- exy:f64:- eyz:f64:- ezx:f64:- ep:f64:-"
+		printf " sd_sxx:f64:Pa sd_syy:f64:Pa sd_szz:f64:Pa sd_sxy:f64:Pa sd_syz:f64:Pa sd_szx:f64:Pa"
+		print " sd_exx:f64:- sd_eyy:f64:- sd_ezz:f64:- sd_exy:f64:- sd_eyz:f64:- sd_ezx:f64:- sd_ep:f64:- n:u32:-"
+		print "# format text"
+		print "# data"
+	}
+	{ d[NR] = $1 * 1e-3; s[NR] = $2 * 1e6; ep[NR] = $3 }
+	END {
+		for (p = 1; p <= 2; p++)
+			for (k = 1; k <= NR; k++) {
+				f = p == 1 ? 0.5 : 1
+				printf "%d %.17g %.17g %.17g 0 0 0 0 0 0 0 0 0 0 %.17g", p, d[k], f * s[k], f * s[k], ep[k]
+				for (c = 0; c < 13; c++) printf " 0"
+				print " 10"
+			}
+		print "# end " 2 * NR
+	}' "$1"
+}
+
+# The closed form of DESIGN.md for the profile SHAPE on a plate of
+# thickness H (m): prints kappa (1/m).
+closed_kappa() {
+	awk -v h="$2" -v E=72e9 -v nu=0.33 '
+	{ d[NR] = $1 * 1e-3; s[NR] = $2 * 1e6 }
+	END {
+		for (k = 1; k < NR; k++)
+			for (g = 0; g <= 2; g++) {
+				t = g / 2; x = d[k] + t * (d[k + 1] - d[k])
+				w = (d[k + 1] - d[k]) * (g == 1 ? 4 : 1) / 6
+				I1 += w * (s[k] + t * (s[k + 1] - s[k])) * (h / 2 - x)
+			}
+		printf "%.12g\n", -12 * (1 - nu) * I1 / (E * h * h * h)
+	}' "$1"
+}
+
+value() { awk -v k="$1:" '$1 == k { print $2; exit }' "$2"; }
+
+# |a / b - 1| < tol
+close_to() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { r = a / b - 1; exit !(r < t && r > -t) }'; }
+
+@test "demform --help and --version: stdout, exit 0" {
+	run --separate-stderr demform --help
+	[ "$status" -eq 0 ]
+	[[ ${lines[0]} == "Usage: demform "* ]]
+	[ -z "$stderr" ]
+	run --separate-stderr demform --version
+	[ "$status" -eq 0 ]
+	[[ $output =~ ^demform\ \(dem\ toolkit\)\ [0-9]+\.[0-9]+\.[0-9]+$ ]]
+}
+
+@test "demform: the Ch. 8.6 strip (4500 elements): curvatures and arc height within 3 % of the closed form, one Newton iteration" {
+	demform -s "$T/el.yaml" "$T/prof" > "$T/sum" 2> "$T/err"
+	[ "$(value elements "$T/sum")" -eq 4500 ]
+	[ "$(value nodes "$T/sum")" -eq 5456 ]
+	k=$(closed_kappa "$T/shape" 0.004)
+	close_to "$(value curvature_x "$T/sum")" "$k" 0.03
+	close_to "$(value curvature_y "$T/sum")" "$k" 0.03
+	close_to "$(value arc_height "$T/sum")" "$(awk -v k="$k" 'BEGIN { print k * 0.15 * 0.15 / 8 }')" 0.03
+	[ "$(value iterations "$T/sum")" -eq 1 ]
+	[ "$(grep -c '^newton: ' "$T/sum")" -eq 2 ]
+	awk '$1 == "residual_rel:" { exit !($2 < 1e-8) }' "$T/sum"
+	tail -n 1 "$T/err" | grep -q '^demform: cost: wall_s=.* factor_s=.* elements=4500 equations=16362 .*iterations=1 factorisations=1'
+}
+
+@test "demform --pass 1: half the profile, half the curvature (linear elastic problem)" {
+	demform -s "$T/small.yaml" "$T/prof" > "$T/a" 2>/dev/null
+	demform -s "$T/small.yaml" --pass 1 "$T/prof" > "$T/b" 2>/dev/null
+	close_to "$(value curvature_x "$T/b")" "$(awk -v k="$(value curvature_x "$T/a")" 'BEGIN { printf "%.12g", k / 2 }')" 1e-6
+}
+
+@test "demform: the same profile on both faces of a symmetric mesh bends nothing; on the bottom only it bends the other way" {
+	cat > "$T/sym.yaml" <<-EOF
+	material: {E: 72 GPa, nu: 0.33}
+	plate: {size: [60 mm, 20 mm, 4 mm], element: 10 mm, layers: 8, grading: 1.3, two_sided: true}
+	EOF
+	cat "$T/sym.yaml" - > "$T/both.yaml" <<-EOF
+	form:
+	  step1: {top: {}, bottom: {}}
+	EOF
+	demform -s "$T/both.yaml" "$T/prof" > "$T/both" 2>/dev/null
+	demform -s "$T/sym.yaml" "$T/prof" > "$T/top" 2>/dev/null
+	awk -v a="$(value curvature_x "$T/both")" -v b="$(value curvature_x "$T/top")" \
+		'BEGIN { exit !(a < 1e-6 * b && a > -1e-6 * b) }'
+	cat "$T/sym.yaml" - > "$T/bot.yaml" <<-EOF
+	form:
+	  step1: {bottom: {}}
+	EOF
+	demform -s "$T/bot.yaml" "$T/prof" > "$T/bot" 2>/dev/null
+	close_to "$(value curvature_x "$T/bot")" "-$(value curvature_x "$T/top")" 1e-6
+}
+
+@test "demform: two steps report two shapes; the second adds its profile to the first's state" {
+	cat "$T/small.yaml" - > "$T/two.yaml" <<-EOF
+	form:
+	  step1: {top: {pass: 1}}
+	  step2: {top: {pass: 1}}
+	EOF
+	demform -s "$T/two.yaml" "$T/prof" > "$T/two" 2>/dev/null
+	demform -s "$T/small.yaml" "$T/prof" > "$T/one" 2>/dev/null
+	[ "$(grep -c '^step: ' "$T/two")" -eq 2 ]
+	k2=$(awk '$1 == "curvature_x:" { k = $2 } END { print k }' "$T/two")
+	close_to "$k2" "$(value curvature_x "$T/one")" 1e-6
+}
+
+@test "demform --large: agrees with small strain for the 4 mm plate, in equilibrium" {
+	demform -s "$T/small.yaml" "$T/prof" > "$T/s" 2>/dev/null
+	demform -s "$T/small.yaml" --large "$T/prof" > "$T/l" 2>/dev/null
+	grep -qx 'strain: large' "$T/l"
+	close_to "$(value arc_height "$T/l")" "$(value arc_height "$T/s")" 0.01
+	awk '$1 == "residual_rel:" { exit !($2 < 1e-8) }' "$T/l"
+	[ "$(value iterations "$T/l")" -gt 1 ]
+}
+
+@test "demform --centre and --vtu: the centre stress table and the plate for ParaView" {
+	demform -s "$T/small.yaml" --centre "$T/c" --vtu "$T/p.vtu" -o "$T/sum" "$T/prof" 2>/dev/null
+	[ "$(grep -vc '^#' "$T/c")" -eq 16 ]
+	tail -n 1 "$T/c" | grep -qx '# end 16'
+	# the top row is compressive, the stress szz near zero (free faces)
+	awk '!/^#/ { print; exit }' "$T/c" | awk '{ exit !($2 < -1e8 && $4 * $4 < 1e14) }'
+	grep -q 'UnstructuredGrid' "$T/p.vtu"
+	grep -q 'arc_height: ' "$T/sum"
+}
+
+@test "demform: usage errors" {
+	usage_error demform -b "$T/prof"
+	usage_error demform --bogus
+	usage_error demform a b
+}
+
+@test "demform: bad input: exit 1, message, no summary" {
+	run --separate-stderr demform -s "$T/small.yaml" --pass 7 -o "$T/o" "$T/prof"
+	[ "$status" -eq 1 ]
+	[[ ${stderr_lines[0]} == "demform: "*"pass 7"* ]]
+	[ ! -e "$T/o" ]
+	printf 'material: {E: 72 GPa, nu: 0.33}\nplate: {layers: 0}\n' > "$T/bad.yaml"
+	run --separate-stderr demform -s "$T/bad.yaml" -o "$T/o" "$T/prof"
+	[ "$status" -eq 1 ]
+	[[ ${stderr_lines[0]} == "demform: "* ]]
+	[ ! -e "$T/o" ]
+	printf 'form: {wobble: 1}\n' | cat "$T/small.yaml" - > "$T/bad.yaml"
+	run --separate-stderr demform -s "$T/bad.yaml" "$T/prof"
+	[ "$status" -eq 1 ]
+	[[ ${stderr_lines[0]} == "demform: "*"wobble"* ]]
+	head -n 5 "$T/prof" > "$T/trunc"
+	run --separate-stderr demform -s "$T/small.yaml" -o "$T/o" "$T/trunc"
+	[ "$status" -eq 1 ]
+	[ ! -e "$T/o" ]
+}
+
+@test "demform: Newton that cannot converge within the cut-backs: exit 3, no summary" {
+	printf 'form: {strain: large, iterations: 1, cutbacks: 1}\n' | cat "$T/small.yaml" - > "$T/nc.yaml"
+	run --separate-stderr demform -s "$T/nc.yaml" -o "$T/o" "$T/prof"
+	[ "$status" -eq 3 ]
+	[[ ${stderr_lines[0]} == "demform: "*"cut-backs"* ]]
+	[ ! -e "$T/o" ]
+}
+
+@test "demform --dump-scene: every default, then exit" {
+	run --separate-stderr demform -s "$T/small.yaml" --dump-scene
+	[ "$status" -eq 0 ]
+	[[ $output == *"layers: 8"* ]]
+	[[ $output == *"tolerance: "* ]]
+	[[ $output == *"increments: 1"* ]]
+}
