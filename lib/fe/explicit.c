@@ -35,6 +35,15 @@
 #error "the gather of slab_1pt assumes 4 lanes"
 #endif
 typedef double vec4 __attribute__((vector_size(4 * sizeof(double))));
+
+/* the node and element loops are also compiled for AVX2 on x86-64 with
+ * GCC (as the kernels of hex8.c and material.c), chosen at load time */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && \
+    !defined(DEM_NO_SIMD_CLONES)
+#define CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#else
+#define CLONES
+#endif
 typedef long long lvec4 __attribute__((vector_size(4 * sizeof(double))));
 
 enum { S_T, S_WXA, S_WXB, S_WDA, S_WDB, S_N };   /* node-loop sums */
@@ -392,6 +401,13 @@ static void apply_pressure(dem_fe_t *fe, const pload_t *pl, double t)
 	}
 }
 
+/* The node and element loops: -O3 with fused multiply-adds, as the
+ * kernels. */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC push_options
+#pragma GCC optimize("O3", "fp-contract=fast")
+#endif
+
 /* ---- Node loop ------------------------------------------------------------ */
 
 typedef struct coef {
@@ -403,7 +419,7 @@ typedef struct coef {
 	double alpha;
 } coef_t;
 
-static inline void node_range(dem_fe_t *fe, const coef_t *c, size_t n0, size_t n1,
+static inline __attribute__((always_inline)) void node_range(dem_fe_t *fe, const coef_t *c, size_t n0, size_t n1,
 			      double sum[S_N], const int ext)
 {
 	const uint8_t *fix = fe->mesh->fix;
@@ -447,6 +463,7 @@ static inline void node_range(dem_fe_t *fe, const coef_t *c, size_t n0, size_t n
 	sum[S_WDB] = 0.5 * wdb;
 }
 
+CLONES
 static void node_chunk(dem_fe_t *fe, const coef_t *c, int ch)
 {
 	size_t n0 = fe->nn * (size_t)ch / NCHUNK, n1 = fe->nn * (size_t)(ch + 1) / NCHUNK;
@@ -457,12 +474,6 @@ static void node_chunk(dem_fe_t *fe, const coef_t *c, int ch)
 }
 
 /* ---- Element loops ---------------------------------------------------------- */
-
-/* The element loops: -O3 with fused multiply-adds, as the kernels. */
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC push_options
-#pragma GCC optimize("O3", "fp-contract=fast")
-#endif
 
 /* Jaumann rotation of a strain with engineering shears over dt (the
  * rotation of dem_mat_jaumann, on the tensor eps_ij = gamma_ij / 2). */
@@ -477,7 +488,7 @@ static inline void rotate_strain(double e[6], double a, double b, double c)
 	e[5] += 2 * c * (e0 - e2) - b * g3 + a * g4;
 }
 
-static inline void slab_1pt(dem_fe_t *fe, slab_t *s, double dt, const int large, const int hg)
+static inline __attribute__((always_inline)) void slab_1pt(dem_fe_t *fe, slab_t *s, double dt, const int large, const int hg)
 {
 	const dem_mat_t *m = fe->mat;
 	const uint32_t *restrict hex = fe->mesh->hex;
@@ -615,7 +626,7 @@ static inline void slab_1pt(dem_fe_t *fe, slab_t *s, double dt, const int large,
 	s->bad = bad;
 }
 
-static inline void slab_full(dem_fe_t *fe, slab_t *s, double dt, const int large)
+static inline __attribute__((always_inline)) void slab_full(dem_fe_t *fe, slab_t *s, double dt, const int large)
 {
 	const dem_mat_t *m = fe->mat;
 	const uint32_t *restrict hex = fe->mesh->hex;
@@ -696,12 +707,8 @@ static inline void slab_full(dem_fe_t *fe, slab_t *s, double dt, const int large
 }
 
 /* the loop chosen once, before time stepping: effects are constants in
- * each instance; on x86-64 with GCC also compiled for AVX2 (as the
- * kernels of hex8.c and material.c) and chosen at load time */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && \
-    !defined(DEM_NO_SIMD_CLONES)
-__attribute__((target_clones("arch=x86-64-v3", "default")))
-#endif
+ * each instance */
+CLONES
 static void slab_run(dem_fe_t *fe, slab_t *s, double dt)
 {
 	if (fe->o.rule == DEM_FE_FULL) {
