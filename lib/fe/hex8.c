@@ -343,7 +343,8 @@ int dem_hex8_1pt_stiffness(const double x[24], const double D[36], double ks,
 }
 
 /* The batched kernels are the hot loop of the explicit stage: compiled
- * at -O3 with fused multiply-adds (results differ from the scalar kernels by round-off only). */
+ * at -O3 with fused multiply-adds (results differ from the scalar kernels
+ * by round-off only). */
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC push_options
 #pragma GCC optimize("O3", "fp-contract=fast")
