@@ -31,6 +31,21 @@
 #define MAXSLAB 32    /* slabs of element layers */
 #define PAR_MIN 20000 /* fewer elements than this: one thread by default */
 
+#if DEM_HEX8_NB != 4
+#error "the gather of slab_1pt assumes 4 lanes"
+#endif
+typedef double vec4 __attribute__((vector_size(4 * sizeof(double))));
+
+/* the node and element loops are also compiled for AVX2 on x86-64 with
+ * GCC (as the kernels of hex8.c and material.c), chosen at load time */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && \
+    !defined(DEM_NO_SIMD_CLONES)
+#define CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#else
+#define CLONES
+#endif
+typedef long long lvec4 __attribute__((vector_size(4 * sizeof(double))));
+
 enum { S_T, S_WXA, S_WXB, S_WDA, S_WDB, S_N };   /* node-loop sums */
 enum { E_INT, E_PL, E_HG, E_NPL, E_N };          /* element-loop sums */
 
@@ -386,6 +401,13 @@ static void apply_pressure(dem_fe_t *fe, const pload_t *pl, double t)
 	}
 }
 
+/* The node and element loops: -O3 with fused multiply-adds, as the
+ * kernels. */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC push_options
+#pragma GCC optimize("O3", "fp-contract=fast")
+#endif
+
 /* ---- Node loop ------------------------------------------------------------ */
 
 typedef struct coef {
@@ -397,7 +419,7 @@ typedef struct coef {
 	double alpha;
 } coef_t;
 
-static inline void node_range(dem_fe_t *fe, const coef_t *c, size_t n0, size_t n1,
+static inline __attribute__((always_inline)) void node_range(dem_fe_t *fe, const coef_t *c, size_t n0, size_t n1,
 			      double sum[S_N], const int ext)
 {
 	const uint8_t *fix = fe->mesh->fix;
@@ -441,6 +463,7 @@ static inline void node_range(dem_fe_t *fe, const coef_t *c, size_t n0, size_t n
 	sum[S_WDB] = 0.5 * wdb;
 }
 
+CLONES
 static void node_chunk(dem_fe_t *fe, const coef_t *c, int ch)
 {
 	size_t n0 = fe->nn * (size_t)ch / NCHUNK, n1 = fe->nn * (size_t)(ch + 1) / NCHUNK;
@@ -465,7 +488,7 @@ static inline void rotate_strain(double e[6], double a, double b, double c)
 	e[5] += 2 * c * (e0 - e2) - b * g3 + a * g4;
 }
 
-static inline void slab_1pt(dem_fe_t *fe, slab_t *s, double dt, const int large, const int hg)
+static inline __attribute__((always_inline)) void slab_1pt(dem_fe_t *fe, slab_t *s, double dt, const int large, const int hg)
 {
 	const dem_mat_t *m = fe->mat;
 	const uint32_t *restrict hex = fe->mesh->hex;
@@ -474,7 +497,7 @@ static inline void slab_1pt(dem_fe_t *fe, slab_t *s, double dt, const int large,
 	double *restrict fi = fe->fi;
 	double kaps = fe->o.hg_stiff, kapv = fe->o.hg_visc;
 	dem_hex8_batch_t b;
-	double xb[24 * NB], vb[24 * NB], fb[24 * NB], Q[12 * NB], P[NB], wp[NB], s0[6 * NB];
+	double xb[24 * NB], vb[24 * NB], fb[24 * NB], Q[12 * NB], P[NB], wp[NB];
 	double eint = 0, epl = 0, ehg = 0, npl = 0, dt2 = INFINITY;
 	size_t bad = 0;
 	for (size_t bl = 0; bl < s->nb; bl++) {
@@ -483,14 +506,18 @@ static inline void slab_1pt(dem_fe_t *fe, slab_t *s, double dt, const int large,
 		const uint32_t *h[NB];
 		for (int e = 0; e < NB; e++)
 			h[e] = hex + 8 * (el0 + (size_t)(e < nv ? e : nv - 1));
-		for (int I = 0; I < 8; I++)
-			for (int e = 0; e < NB; e++) {
-				size_t n = 3 * (size_t)h[e][I];
-				for (int c = 0; c < 3; c++) {
-					xb[(8 * c + I) * NB + e] = xs[n + c];
-					vb[(8 * c + I) * NB + e] = vs[n + c];
-				}
+		/* one vector store per batch row, so that the kernel's vector
+		 * loads are forwarded from the stores (scalar stores would not) */
+		for (int I = 0; I < 8; I++) {
+			size_t n0 = 3 * (size_t)h[0][I], n1 = 3 * (size_t)h[1][I];
+			size_t n2 = 3 * (size_t)h[2][I], n3 = 3 * (size_t)h[3][I];
+			for (int c = 0; c < 3; c++) {
+				vec4 xv = { xs[n0 + c], xs[n1 + c], xs[n2 + c], xs[n3 + c] };
+				vec4 vv = { vs[n0 + c], vs[n1 + c], vs[n2 + c], vs[n3 + c] };
+				memcpy(xb + (8 * c + I) * NB, &xv, sizeof xv);
+				memcpy(vb + (8 * c + I) * NB, &vv, sizeof vv);
 			}
+		}
 		unsigned badm = dem_hex8_batch_kin(&b, xb, vb);
 		if (badm) {
 			/* leave the block as it was; report its first bad element */
@@ -504,22 +531,40 @@ static inline void slab_1pt(dem_fe_t *fe, slab_t *s, double dt, const int large,
 		}
 		size_t B = s->b0 + bl;
 		double *sg = fe->sig + B * 6 * NB, *ep = fe->ep + B * NB;
+		vec4 s0[6];
 		memcpy(s0, sg, sizeof s0);
 		unsigned pm = dem_mat_update_batch(m, dt, b.d[0], large ? b.w[0] : NULL, sg, ep, wp);
+		/* energies of the lanes (vector across the batch) */
+		vec4 vol, dE = { 0 }, q[12];
+		memcpy(&vol, b.vol, sizeof vol);
+		memcpy(q, b.q, sizeof q);
+		for (int k = 0; k < 6; k++) {
+			vec4 sn, dk;
+			memcpy(&sn, sg + k * NB, sizeof sn);
+			memcpy(&dk, b.d[k], sizeof dk);
+			dE += (s0[k] + sn) * dk;
+		}
+		dE *= 0.5 * dt * vol;
+		vec4 dP;
+		memcpy(&dP, wp, sizeof dP);
+		dP *= vol;
+		vec4 dH = { 0 };
 		if (hg) {
 			double *qs = fe->Qs + B * 12 * NB;
-			double qo[NB] = { 0 }, qn[NB] = { 0 };
-			for (int i = 0; i < 12; i++)
-				for (int e = 0; e < NB; e++)
-					qo[e] += qs[i * NB + e] * b.q[i][e];
+			vec4 qo = { 0 }, qn = { 0 }, Pv, t;
+			for (int i = 0; i < 12; i++) {
+				memcpy(&t, qs + i * NB, sizeof t);
+				qo += t * q[i];
+			}
 			dem_hex8_batch_hg(&b, m, kaps, kapv, dt, qs, Q, P);
-			for (int i = 0; i < 12; i++)
-				for (int e = 0; e < NB; e++)
-					qn[e] += qs[i * NB + e] * b.q[i][e];
+			for (int i = 0; i < 12; i++) {
+				memcpy(&t, qs + i * NB, sizeof t);
+				qn += t * q[i];
+			}
+			memcpy(&Pv, P, sizeof Pv);
 			/* work of the mean of the old and new stiffness forces
 			 * (trapezoidal, like the stress work) and the viscous ones */
-			for (int e = 0; e < nv; e++)
-				ehg += dt * (P[e] - 0.5 * (qn[e] - qo[e]));
+			dH = dt * (Pv - 0.5 * (qn - qo));
 		}
 		dem_hex8_batch_force(&b, sg, hg ? Q : NULL, fb);
 		for (int e = 0; e < nv; e++) {
@@ -529,31 +574,48 @@ static inline void slab_1pt(dem_fe_t *fe, slab_t *s, double dt, const int large,
 				fi[n + 1] += fb[(8 + I) * NB + e];
 				fi[n + 2] += fb[(16 + I) * NB + e];
 			}
-			double w = 0;
-			for (int k = 0; k < 6; k++)
-				w += (s0[k * NB + e] + sg[k * NB + e]) * b.d[k][e];
-			eint += 0.5 * dt * b.vol[e] * w;
-			epl += b.vol[e] * wp[e];
+			eint += dE[e];
+			epl += dP[e];
+			ehg += dH[e];
 			npl += pm >> e & 1;
 		}
 		if (large) {
+			/* total strain: rotate, then add d dt; the step estimate */
 			double *es = fe->eps + B * 6 * NB, *kd = fe->kdt + B * NB;
-			for (int e = 0; e < NB; e++) {
-				double ee[6];
-				for (int k = 0; k < 6; k++)
-					ee[k] = es[k * NB + e];
-				rotate_strain(ee, dt * b.w[0][e], dt * b.w[1][e], dt * b.w[2][e]);
-				for (int k = 0; k < 6; k++)
-					es[k * NB + e] = ee[k] + dt * b.d[k][e];
-				double cm = 0;
-				for (int k = 1; k <= 3; k++) {
-					double c2 = b.c[k][0][e] * b.c[k][0][e] + b.c[k][1][e] * b.c[k][1][e] +
-						    b.c[k][2][e] * b.c[k][2][e];
-					cm = c2 > cm ? c2 : cm;
-				}
-				double d2 = kd[e] * b.vol[e] * b.vol[e] / cm;
-				dt2 = d2 < dt2 ? d2 : dt2;
+			vec4 E[6], d, a, bb, c;
+			memcpy(E, es, sizeof E);
+			memcpy(&a, b.w[0], sizeof a);
+			memcpy(&bb, b.w[1], sizeof bb);
+			memcpy(&c, b.w[2], sizeof c);
+			a *= dt;
+			bb *= dt;
+			c *= dt;
+			vec4 F[6];
+			F[0] = E[0] + a * E[3] - c * E[5];
+			F[1] = E[1] + bb * E[4] - a * E[3];
+			F[2] = E[2] + c * E[5] - bb * E[4];
+			F[3] = E[3] + 2 * a * (E[1] - E[0]) - c * E[4] + bb * E[5];
+			F[4] = E[4] + 2 * bb * (E[2] - E[1]) - a * E[5] + c * E[3];
+			F[5] = E[5] + 2 * c * (E[0] - E[2]) - bb * E[3] + a * E[4];
+			for (int k = 0; k < 6; k++) {
+				memcpy(&d, b.d[k], sizeof d);
+				F[k] += dt * d;
 			}
+			memcpy(es, F, sizeof F);
+			vec4 cm = { 0 }, kv;
+			for (int k = 1; k <= 3; k++) {
+				vec4 c0, c1, c2;
+				memcpy(&c0, b.c[k][0], sizeof c0);
+				memcpy(&c1, b.c[k][1], sizeof c1);
+				memcpy(&c2, b.c[k][2], sizeof c2);
+				vec4 c2s = c0 * c0 + c1 * c1 + c2 * c2;
+				lvec4 gt = c2s > cm;
+				cm = (vec4)((gt & (lvec4)c2s) | (~gt & (lvec4)cm));
+			}
+			memcpy(&kv, kd, sizeof kv);
+			vec4 d2 = kv * vol * vol / cm;
+			for (int e = 0; e < NB; e++)
+				dt2 = d2[e] < dt2 ? d2[e] : dt2;
 		}
 	}
 	s->sum[E_INT] = eint;
@@ -564,7 +626,7 @@ static inline void slab_1pt(dem_fe_t *fe, slab_t *s, double dt, const int large,
 	s->bad = bad;
 }
 
-static inline void slab_full(dem_fe_t *fe, slab_t *s, double dt, const int large)
+static inline __attribute__((always_inline)) void slab_full(dem_fe_t *fe, slab_t *s, double dt, const int large)
 {
 	const dem_mat_t *m = fe->mat;
 	const uint32_t *restrict hex = fe->mesh->hex;
@@ -646,6 +708,7 @@ static inline void slab_full(dem_fe_t *fe, slab_t *s, double dt, const int large
 
 /* the loop chosen once, before time stepping: effects are constants in
  * each instance */
+CLONES
 static void slab_run(dem_fe_t *fe, slab_t *s, double dt)
 {
 	if (fe->o.rule == DEM_FE_FULL) {
@@ -665,6 +728,10 @@ static void slab_run(dem_fe_t *fe, slab_t *s, double dt)
 			slab_1pt(fe, s, dt, 0, 0);
 	}
 }
+
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC pop_options
+#endif
 
 /* ---- The step -------------------------------------------------------------- */
 

@@ -318,6 +318,14 @@ int dem_mat_update_j2_rate(const dem_mat_t *m, const double deps[6], double dt,
 	return 1;
 }
 
+/* The batched update is in the hot loop of the explicit stage: compiled
+ * at -O3 (without contracting to fused multiply-adds, which would break
+ * its bitwise agreement with the scalar update). */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC push_options
+#pragma GCC optimize("O3")
+#endif
+
 /* ---- Batched update ------------------------------------------------------ */
 
 /* One lane per material point over a vector of NB doubles (GCC/Clang vector
@@ -467,6 +475,10 @@ unsigned dem_mat_update_batch(const dem_mat_t *m, double dt,
 	}
 	return mask;
 }
+
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC pop_options
+#endif
 
 dem_mat_update_fn dem_mat_update_select(const dem_mat_t *m)
 {
