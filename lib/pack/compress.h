@@ -63,6 +63,7 @@ typedef enum dem_compress_phase {
 	DEM_COMPRESS_INIT,        /* loose initial packing placed */
 	DEM_COMPRESS_GLOBAL,      /* global compression converged (Box 6.1) */
 	DEM_COMPRESS_SHAKE,       /* shaking + random compression (Box 6.2) */
+	DEM_COMPRESS_RELAX,       /* relaxation under gravity, then Box 6.1 */
 	DEM_COMPRESS_REFILL       /* a batch dropped from the lid (Box 6.3) */
 } dem_compress_phase_t;
 
@@ -98,6 +99,16 @@ typedef struct dem_compress_spec {
 	size_t max_reject;        /* M_r of Box 6.3 (0: lid area / (4 Rmean^2)) */
 	double buffer;            /* largest buffer zone, in Rmax (1) */
 	int nroll;                /* cone moves of a dropped sphere (20) */
+	int relax;                /* nonzero: relax after each Box 6.2 (1) */
+	double relax_overlap;     /* deepest overlap under the weight, in Rmin (0.01) */
+	double relax_ftol;        /* settled: mean fall per 100 steps, in Rmin (1e-3) */
+	int relax_iter;           /* FIRE steps per stage at most (20000) */
+	double relax_dt;          /* largest FIRE step, in sqrt(m/k) of Rmin (0.2) */
+	double relax_skin;        /* Verlet skin, in Rmin (1) */
+	double relax_batch;       /* relax after a refill adding this share of
+				     the spheres at least (0.01) */
+	double relax_depth;       /* after a refill relax down to this many
+				     diameters below the new spheres (5) */
 	dem_compress_stage_fn stage;  /* may be NULL */
 	void *stage_ctx;
 } dem_compress_spec_t;
@@ -108,9 +119,16 @@ typedef int (*dem_compress_emit_fn)(void *ctx, const double *x, double r);
 
 typedef struct dem_compress_stats {
 	size_t n;
-	double density, pe, seconds;
+	double density, pe, seconds;  /* density: sphere volume / domain volume */
+	double ztop;              /* top of the highest sphere */
+	double density_top;       /* over the domain below ztop (sampled) */
+	double density_core;      /* over the domain one largest diameter
+				     from every wall and below ztop (sampled) */
 	int batches;              /* refill batches that added spheres */
 	size_t iters;             /* compression iterations, all phases */
+	size_t steps;             /* relaxation (FIRE) steps */
+	size_t removed;           /* spheres taken out by the last resort of the
+				     relaxation (0 in every test so far) */
 	size_t detections, pairs; /* detection runs, neighbour pairs found */
 } dem_compress_stats_t;
 
