@@ -1120,7 +1120,7 @@ static double domain_volume(const dem_domain_t *d)
 	if (!d->nplane)
 		return d->cylinder ? DEM_PI * d->radius * d->radius * w[2]
 				   : w[0] * w[1] * w[2];
-	enum { M = 64 };
+	enum { M = 200 };
 	size_t in = 0;
 	for (int a = 0; a < M; a++)
 		for (int b = 0; b < M; b++)
@@ -1277,16 +1277,16 @@ int dem_pack_compress(const dem_compress_spec_t *s, gsl_rng *r,
 		rc = run(&p);
 	if (!rc && p.n)
 		measure(&p);
-	for (size_t i = 0; !rc && emit && i < p.n; i++) {
-		double c[3] = {p.x[0][i], p.x[1][i], p.x[2][i]};
-		rc = emit(ctx, c, p.r[i]);
-	}
 	p.st.n = p.n;
 	p.st.density = p.volsum / p.vol;
 	p.st.pe = energy(&p);
 	p.st.seconds = now(&p);
-	if (stats)
+	if (stats)      /* complete before the first emit, for a header */
 		*stats = p.st;
+	for (size_t i = 0; !rc && emit && i < p.n; i++) {
+		double c[3] = {p.x[0][i], p.x[1][i], p.x[2][i]};
+		rc = emit(ctx, c, p.r[i]);
+	}
 	release(&p);
 	return rc;
 }

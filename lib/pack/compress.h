@@ -11,7 +11,19 @@
  *     DO { N_s shakes (moves normal to -z); random compression with a
  *          cone of directions (Eq. 6.9) } while the energy still falls
  *       (Box 6.2);
+ *     relaxation under gravity (beyond the thesis, on unless relax = 0):
+ *       the spheres above a frozen depth settle as frictionless soft
+ *       spheres, overlap springs plus Eq. 6.7 minimised by FIRE (Bitzek
+ *       et al. 2006); the weight is taken off, FIRE and projection
+ *       sweeps remove every overlap (the packing expands upwards), and
+ *       Box 6.1 closes the gaps; the result is kept only if Eq. 6.7 fell;
  *   } while a new batch dropped from the lid (Box 6.3) added spheres.
+ *
+ * The thesis's stages move each sphere to its first contact with the others
+ * held still, which leaves arches (the thesis reached 0.5289 in the Ch. 6.3
+ * cylinder, this code 0.505); frictionless spheres settled together slide
+ * past one another and reach random close packing (Silbert et al. 2002,
+ * Phys. Rev. E 65, 031304): 0.62 in that cylinder.
  *
  * Neighbours come from the library's contact detection (D-cell) over the
  * spheres' boxes extended by a buffer zone along each sphere's own moving
@@ -25,7 +37,8 @@
  * box).  Compression is along -z; the lid is the face z = hi[2].
  *
  * Invariant after every stage: no two spheres overlap and none crosses a
- * wall (up to rounding, far below 1e-9 of a radius).
+ * wall (up to rounding and the relaxation's accepted 1e-10 of the smaller
+ * radius; the contract is 1e-9).
  */
 #ifndef DEM_PACK_COMPRESS_H
 #define DEM_PACK_COMPRESS_H
@@ -50,7 +63,7 @@ typedef struct dem_domain {
 	size_t nplane;            /* extra half-spaces (owned by the caller) */
 	const dem_plane_t *plane;
 	double volume;            /* 0: computed (exact for box and cylinder,
-				     a 64^3 midpoint estimate with planes) */
+				     a 200^3 midpoint estimate with planes) */
 } dem_domain_t;
 
 /* A box; a cylinder of radius R on axis (cx, cy) from z0 to z1. */
@@ -137,7 +150,7 @@ void dem_compress_spec_init(dem_compress_spec_t *s);
 
 /* Fill s->dom with spheres of radii from s->law using r (positions, radii,
  * directions all from r), then emit them (emit may be NULL).  stats may be
- * NULL.  Returns DEM_OK, DEM_EINPUT for a bad spec, DEM_EIO without memory,
+ * NULL; it is complete before the first emit.  Returns DEM_OK, DEM_EINPUT for a bad spec, DEM_EIO without memory,
  * or a nonzero value from a callback. */
 int dem_pack_compress(const dem_compress_spec_t *s, gsl_rng *r,
 		      dem_compress_emit_fn emit, void *ctx,
