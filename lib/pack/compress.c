@@ -975,8 +975,8 @@ static void reorder(pk_t *p)
 	}
 }
 
-/* The last resort when the sweeps leave an overlap (never seen in the
- * tests): the upper sphere of every pair still overlapping, and any sphere
+/* The last resort when the sweeps leave an overlap (rare: seen where a
+ * plane meets the cylinder in a wedge): the upper sphere of every pair still overlapping, and any sphere
  * across a wall, is taken out, so the packing stays valid; counted in
  * stats.removed. */
 static void drop_offenders(pk_t *p)

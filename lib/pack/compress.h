@@ -141,7 +141,7 @@ typedef struct dem_compress_stats {
 	size_t iters;             /* compression iterations, all phases */
 	size_t steps;             /* relaxation (FIRE) steps */
 	size_t removed;           /* spheres taken out by the last resort of the
-				     relaxation (0 in every test so far) */
+				     relaxation (rare; wedge corners) */
 	size_t detections, pairs; /* detection runs, neighbour pairs found */
 } dem_compress_stats_t;
 
