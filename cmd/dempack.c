@@ -4,6 +4,9 @@
  *                                in a box sized for a target density (Ch. 2.5)
  *   dempack front [options]      disks filling a rectangle or (open form) a
  *                                polygon by an advancing front (Ch. 5.2)
+ *   dempack compress [options]   spheres filling a box, a cylinder or a convex
+ *                                polyhedron densely and without overlap by
+ *                                compression (Ch. 6) and relaxation
  *   dempack shots [options]      the impacts of a peening job, pass by pass:
  *                                an offset n x n grid (Ch. 8.6) or random
  *                                positions up to a coverage (Ch. 7.1.3)
@@ -12,10 +15,12 @@
  * standard output or to -o FILE.  The scene's pack: section (and shot: for
  * shots) gives the defaults; options override it.
  */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include <gsl/gsl_errno.h>
 
@@ -28,6 +33,7 @@
 #include "io/scene.h"
 #include "io/stream.h"
 #include "io/vtk.h"
+#include "pack/compress.h"
 #include "pack/front.h"
 #include "pack/random.h"
 #include "pack/shots.h"
@@ -37,14 +43,16 @@
 enum { OPT_DIM = DEM_OPT_PROGRAM, OPT_DENSITY, OPT_LAW, OPT_RMIN, OPT_LAMBDA,
        OPT_ASPECT, OPT_FORM, OPT_DOMAIN, OPT_POLYGON, OPT_CHECK_LIMIT, OPT_GRAVITY, OPT_VTK,
        OPT_PATTERN, OPT_AREA, OPT_GRID, OPT_PASSES, OPT_COVERAGE, OPT_PER_PASS,
-       OPT_SEPARATION, OPT_DIMPLE, OPT_SPEED, OPT_ANGLE, OPT_SHOT_RADIUS };
+       OPT_SEPARATION, OPT_DIMPLE, OPT_SPEED, OPT_ANGLE, OPT_SHOT_RADIUS,
+       OPT_BOX, OPT_CYLINDER, OPT_PLANES, OPT_NO_RELAX, OPT_TOLERANCE, OPT_SHAKES, OPT_CONE,
+       OPT_STAGES };
 
-enum { METHOD_RANDOM, METHOD_FRONT, METHOD_SHOTS };
-static const char *const methods[] = {"random", "front", "shots", NULL};
+enum { METHOD_RANDOM, METHOD_FRONT, METHOD_SHOTS, METHOD_COMPRESS };
+static const char *const methods[] = {"random", "front", "shots", "compress", NULL};
 
 static const dem_opt_t options[] = {
 	{"dim", OPT_DIM, "D", "dimension: 2 (disks) or 3 (spheres); default 2"},
-	{"number", 'n', "N", "number of objects; default 1000"},
+	{"number", 'n', "N", "number of objects; default 1000 (compress: at most N spheres; default 0, no limit)"},
 	{"density", OPT_DENSITY, "RHO", "packing density in (0, 1]; default 0.6"},
 	{"law", OPT_LAW, "LAW", "radius law: mono, urd, nrd or lnrd; default urd"},
 	{"rmin", OPT_RMIN, "R", "smallest radius, with a unit if wanted (1 mm); default 1 m"},
@@ -53,9 +61,17 @@ static const dem_opt_t options[] = {
 	{"form", OPT_FORM, "FORM", "front: closed (from the centre) or open (from the bottom); default open"},
 	{"domain", OPT_DOMAIN, "XLO:YLO:XHI:YHI", "front: the rectangle to fill; default 0:0:50:50 (m)"},
 	{"polygon", OPT_POLYGON, "X:Y:X:Y:X:Y[:X:Y]", "front, open form: fill this simple polygon (3 or more vertices, convex or concave) instead of --domain"},
-	{"vtk", OPT_VTK, "FILE", "front: also write the packing to FILE as legacy VTK points with a radius scalar (ParaView)"},
+	{"vtk", OPT_VTK, "FILE", "front, compress: also write the packing to FILE as legacy VTK points with a radius scalar (ParaView)"},
 	{"check-limit", OPT_CHECK_LIMIT, "K", "front: check at most K front disks each way; default 0, no limit"},
 	{"gravity", OPT_GRAVITY, NULL, "front, open form: each disk rests stably under gravity (-y)"},
+	{"box", OPT_BOX, "XLO:YLO:ZLO:XHI:YHI:ZHI", "compress: the box to fill (with --planes: their bounding box); default 0:0:0:20:20:20 (m)"},
+	{"cylinder", OPT_CYLINDER, "CX:CY:R:ZLO:ZHI", "compress: fill the cylinder of radius R about the vertical axis (CX, CY) from ZLO to ZHI"},
+	{"planes", OPT_PLANES, "NX:NY:NZ:D[:NX:NY:NZ:D]", "compress: cut the box or cylinder by the half-spaces NX x + NY y + NZ z >= D (a convex polyhedron); 4 numbers a plane"},
+	{"no-relax", OPT_NO_RELAX, NULL, "compress: the thesis's stages only (Boxes 6.1-6.4), no relaxation under gravity"},
+	{"tolerance", OPT_TOLERANCE, "TAU", "compress: tau of the energy test Eq. 6.8; default by --accuracy (1e-3)"},
+	{"shakes", OPT_SHAKES, "N", "compress: N_s shakes per round of Box 6.2; default 5"},
+	{"cone", OPT_CONE, "B", "compress: beta-bar of Eq. 6.9, the cone of random compression; default 0.5"},
+	{"stages", OPT_STAGES, "FILE", "compress: write each stage (phase, batch, spheres, density, seconds) to FILE as a table"},
 	{"pattern", OPT_PATTERN, "P", "shots: grid (offset n x n per pass) or random; default grid"},
 	{"area", OPT_AREA, "AX:AY", "shots: sides of the impact area; default 5.6mm:5.6mm"},
 	{"grid", OPT_GRID, "N", "shots, grid: N x N shots per pass; default 4"},
@@ -74,7 +90,8 @@ static const dem_opt_t options[] = {
 static const char usage[] =
 	"Usage: dempack random [OPTION]...\n"
 	"  or:  dempack front [OPTION]...\n"
-	"  or:  dempack shots [OPTION]...\n";
+	"  or:  dempack shots [OPTION]...\n"
+	"  or:  dempack compress [OPTION]...\n";
 static const char purpose[] =
 	"Make a packing of disks or spheres and write it as a particle stream.\n"
 	"\n"
@@ -85,6 +102,11 @@ static const char purpose[] =
 	"            advancing front, closed or open form (Ch. 5.2), or with the open\n"
 	"            form any simple polygon; disks not wholly inside are culled; the\n"
 	"            density reached is in the header\n"
+	"  compress  spheres filling a box, a vertical cylinder or a convex polyhedron\n"
+	"            without overlap: random loose start, global, random and shaking\n"
+	"            compression and refilling from the lid (Ch. 6), each batch\n"
+	"            relaxed under gravity as frictionless spheres; the density\n"
+	"            reached is in the header\n"
 	"  shots     the impacts of a peening job as a shot stream, pass by pass: an\n"
 	"            n x n grid offset in every pass (Ch. 8.6) or random positions\n"
 	"            until a target coverage (Ch. 7.1.3)";
@@ -93,6 +115,7 @@ static const char epilogue[] =
 	"  dempack random --dim 2 -n 1000000 --density 0.6 --lambda 10 --law urd --seed 1 -b\n"
 	"  dempack front --domain 0:0:1500:1500 --rmin 0.5 --lambda 2 --seed 1 -b\n"
 	"  dempack front --polygon 0:0:2:0:2:1:1:1:1:2:0:2 --rmin 0.02 --gravity --vtk l.vtk\n"
+	"  dempack compress --cylinder 0:0:0.4mm:0:1.6mm --rmin 0.01mm --lambda 2 --seed 1\n"
 	"  dempack shots --grid 4 --passes 32 --area 5.6mm:5.6mm --speed 46.5\n"
 	"  dempack shots --pattern random --coverage 200 --dimple-radius 0.4mm --seed 1\n"
 	"\nSee dempack(1), dem-scene(5) and dem-streams(5).\n";
@@ -101,6 +124,7 @@ struct cmdline {
 	dem_common_t com;
 	const char *method;
 	const char *vtk;        /* --vtk FILE, or NULL */
+	const char *stages;     /* --stages FILE, or NULL */
 };
 
 /* The method options: the scene key each sets, and the methods that read
@@ -110,6 +134,7 @@ struct cmdline {
 #define M_RANDOM (1u << METHOD_RANDOM)
 #define M_FRONT (1u << METHOD_FRONT)
 #define M_SHOTS (1u << METHOD_SHOTS)
+#define M_COMPRESS (1u << METHOD_COMPRESS)
 static const struct method_opt {
 	int key;
 	unsigned methods;
@@ -117,12 +142,19 @@ static const struct method_opt {
 	int vector;             /* typed "a:b:c" for a vector key */
 } method_opts[] = {
 	{OPT_DIM, M_RANDOM, "--dim", "pack.dim", 0},
-	{'n', M_RANDOM, "--number", "pack.n", 0},
+	{'n', M_RANDOM | M_COMPRESS, "--number", "pack.n", 0},
 	{OPT_DENSITY, M_RANDOM, "--density", "pack.density", 0},
 	{OPT_ASPECT, M_RANDOM, "--aspect", "pack.aspect", 1},
-	{OPT_LAW, M_RANDOM | M_FRONT, "--law", "pack.radius.law", 0},
-	{OPT_RMIN, M_RANDOM | M_FRONT, "--rmin", "pack.radius.min", 0},
-	{OPT_LAMBDA, M_RANDOM | M_FRONT, "--lambda", "pack.radius.lambda", 0},
+	{OPT_LAW, M_RANDOM | M_FRONT | M_COMPRESS, "--law", "pack.radius.law", 0},
+	{OPT_RMIN, M_RANDOM | M_FRONT | M_COMPRESS, "--rmin", "pack.radius.min", 0},
+	{OPT_LAMBDA, M_RANDOM | M_FRONT | M_COMPRESS, "--lambda", "pack.radius.lambda", 0},
+	{OPT_BOX, M_COMPRESS, "--box", "pack.box", 1},
+	{OPT_CYLINDER, M_COMPRESS, "--cylinder", "pack.cylinder", 1},
+	{OPT_PLANES, M_COMPRESS, "--planes", "pack.planes", 1},
+	{OPT_NO_RELAX, M_COMPRESS, "--no-relax", "pack.relax", 0},
+	{OPT_TOLERANCE, M_COMPRESS, "--tolerance", "pack.tolerance", 0},
+	{OPT_SHAKES, M_COMPRESS, "--shakes", "pack.shakes", 0},
+	{OPT_CONE, M_COMPRESS, "--cone", "pack.cone", 0},
 	{OPT_FORM, M_FRONT, "--form", "pack.form", 0},
 	{OPT_DOMAIN, M_FRONT, "--domain", "pack.domain", 1},
 	{OPT_POLYGON, M_FRONT, "--polygon", "pack.polygon", 1},
@@ -161,13 +193,18 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 			cl->vtk = optarg;
 			continue;
 		}
+		if (k == OPT_STAGES) {
+			cl->stages = optarg;
+			continue;
+		}
 		for (size_t i = 0; i < NMETHOD_OPTS; i++) {
 			const struct method_opt *o = &method_opts[i];
 			if (k != o->key)
 				continue;
 			given |= 1UL << i;
-			if (!optarg)    /* a flag */
-				dem_common_override(com, o->scene_key, "true", o->name);
+			if (!optarg)    /* a flag; --no-relax turns a key off */
+				dem_common_override(com, o->scene_key,
+						    k == OPT_NO_RELAX ? "false" : "true", o->name);
 			else if (!o->vector)
 				dem_common_override(com, o->scene_key, optarg, o->name);
 			else if (dem_common_override_vector(com, o->scene_key, optarg, o->name))
@@ -183,14 +220,16 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 			if (strcmp(cl->method, methods[i]) == 0)
 				m = i;
 		if (!cl->method && !com->dump)
-			dem_cli_error(&c, "no method given (random, front or shots)");
+			dem_cli_error(&c, "no method given (random, front, shots or compress)");
 		else if (cl->method && m < 0)
-			dem_cli_error(&c, "unknown method '%s' (this version has: random, front, shots)", cl->method);
+			dem_cli_error(&c, "unknown method '%s' (this version has: random, front, shots, compress)", cl->method);
 		for (size_t i = 0; m >= 0 && i < NMETHOD_OPTS; i++)
 			if ((given >> i & 1) && !(method_opts[i].methods >> m & 1))
 				dem_cli_error(&c, "%s: not an option of method %s", method_opts[i].name, methods[m]);
-		if (cl->vtk && m >= 0 && m != METHOD_FRONT)
+		if (cl->vtk && m >= 0 && m != METHOD_FRONT && m != METHOD_COMPRESS)
 			dem_cli_error(&c, "--vtk: not an option of method %s", methods[m]);
+		if (cl->stages && m >= 0 && m != METHOD_COMPRESS)
+			dem_cli_error(&c, "--stages: not an option of method %s", methods[m]);
 		if (m >= 0)     /* the method typed wins over the scene's */
 			dem_common_override(com, "pack.method", cl->method, cl->method);
 		if (optind < argc)
@@ -299,6 +338,107 @@ static int read_law(dem_scene_t *s, dem_radius_law_t *law, dem_error_t *e)
 	return DEM_OK;
 }
 
+/* pack.planes: the half-spaces written flat, [nx1, ny1, nz1, d1, nx2, ...]
+ * (as pack.polygon: vectors of a known length only, so each multiple of 4
+ * is tried in turn).  Each normal points into the domain and is scaled to
+ * unit length together with its d, so give the normals as plain numbers
+ * and d as a length.  *pl is malloc'd, NULL when the key is absent. */
+#define MAXPLANES 256
+static int read_planes(dem_scene_t *s, dem_plane_t **pl, size_t *n, dem_error_t *e)
+{
+	dem_error_t e2;
+
+	*pl = NULL;
+	*n = 0;
+	if (!dem_scene_has(s, "pack.planes"))
+		return DEM_OK;
+	double *buf = malloc(4 * MAXPLANES * sizeof *buf);
+	if (!buf)
+		return dem_error_nomem(e, "planes");
+	for (int k = 4; k <= 4 * MAXPLANES; k += 4) {
+		dem_error_clear(&e2);
+		if (dem_scene_vector(s, "pack.planes", DEM_DIM_LENGTH, k, NULL,
+				     -HUGE_VAL, HUGE_VAL, buf, &e2) == DEM_OK) {
+			dem_plane_t *q = malloc((size_t)(k / 4) * sizeof *q);
+			if (!q) {
+				free(buf);
+				return dem_error_nomem(e, "planes");
+			}
+			for (int i = 0; i < k / 4; i++) {
+				const double *b = buf + 4 * i;
+				double len = sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+				if (!(len > 0)) {
+					free(q);
+					free(buf);
+					return dem_scene_error(s, "pack.planes", e, "plane %d: the normal is zero", i + 1);
+				}
+				q[i] = (dem_plane_t){{b[0] / len, b[1] / len, b[2] / len}, b[3] / len};
+			}
+			free(buf);
+			*pl = q;
+			*n = (size_t)(k / 4);
+			return DEM_OK;
+		}
+		if (strstr(e2.msg, "pack.planes[")) {   /* an item is bad */
+			free(buf);
+			if (strstr(e2.msg, "got a sequence"))
+				return dem_scene_error(s, "pack.planes", e, "write the planes "
+						       "flat: [nx1, ny1, nz1, d1, nx2, ...]");
+			*e = e2;
+			return e->code;
+		}
+	}
+	free(buf);
+	return dem_scene_error(s, "pack.planes", e, "expected the planes flat, "
+			       "[nx1, ny1, nz1, d1, ...]: 4 numbers a plane, 1 to %d planes", MAXPLANES);
+}
+
+/* The compress method's keys of the pack: section; the accuracy preset
+ * sets tau (Eq. 6.8) and the end of settling unless the scene does. */
+static int read_compress(dem_scene_t *s, int accuracy, dem_compress_spec_t *cp,
+			 dem_plane_t **planes, dem_error_t *e)
+{
+	static const double box0[6] = {0, 0, 0, 20, 20, 20};
+	static const double tau[3] = {1e-2, 1e-3, 1e-4}, ftol[3] = {3e-3, 1e-3, 3e-4};
+	double box[6], cyl[5];
+	long n, shakes;
+	int relax;
+
+	dem_compress_spec_init(cp);
+	if (read_law(s, &cp->law, e) ||
+	    dem_scene_vector(s, "pack.box", DEM_DIM_LENGTH, 6, box0, -HUGE_VAL, HUGE_VAL, box, e) ||
+	    dem_scene_int(s, "pack.n", 0, 0, 4294967295L, &n, e) ||
+	    dem_scene_bool(s, "pack.relax", 1, &relax, e) ||
+	    dem_scene_quantity(s, "pack.tolerance", DEM_DIM_NONE, tau[accuracy], DEM_SCENE_GT0, 1, &cp->tol, e) ||
+	    dem_scene_int(s, "pack.shakes", 5, 0, 1000, &shakes, e) ||
+	    dem_scene_quantity(s, "pack.cone", DEM_DIM_NONE, 0.5, 0, 100, &cp->beta, e))
+		return e->code;
+	cp->relax_ftol = ftol[accuracy];
+	cp->max_n = (size_t)n;
+	cp->relax = relax;
+	cp->nshake = (int)shakes;
+	if (dem_scene_has(s, "pack.cylinder")) {
+		if (dem_scene_has(s, "pack.box"))
+			return dem_scene_error(s, "pack.box", e, "not read with pack.cylinder, "
+					       "which is its own bounding box; give one or the other");
+		if (dem_scene_vector(s, "pack.cylinder", DEM_DIM_LENGTH, 5, NULL, -HUGE_VAL, HUGE_VAL, cyl, e))
+			return e->code;
+		if (!(cyl[2] > 0 && cyl[3] < cyl[4]))
+			return dem_scene_error(s, "pack.cylinder", e,
+					       "expected [cx, cy, R, z0, z1] with R > 0 and z0 < z1");
+		dem_domain_cylinder(&cp->dom, cyl[0], cyl[1], cyl[2], cyl[3], cyl[4]);
+	} else {
+		if (!(box[0] < box[3] && box[1] < box[4] && box[2] < box[5]))
+			return dem_scene_error(s, "pack.box", e, "expected [xlo, ylo, zlo, xhi, yhi, zhi] "
+					       "with each lo < hi");
+		dem_domain_box(&cp->dom, box, box + 3);
+	}
+	if (read_planes(s, planes, &cp->dom.nplane, e))
+		return e->code;
+	cp->dom.plane = *planes;
+	return DEM_OK;
+}
+
 /* A key that only the other pattern reads, given anyway. */
 static int other_pattern(dem_scene_t *s, const char *const *keys, int pattern,
 			 dem_error_t *e)
@@ -375,7 +515,9 @@ static int read_shots(dem_scene_t *s, dem_shots_spec_t *sp, dem_error_t *e)
 
 /* The pack: section, resolved: the method, then its keys. */
 static int read_scene(dem_scene_t *s, int *method, dem_random_spec_t *sp,
-		      dem_front_spec_t *fp, dem_shots_spec_t *hp, dem_error_t *e)
+		      dem_front_spec_t *fp, dem_shots_spec_t *hp,
+		      dem_compress_spec_t *cp, dem_plane_t **planes, int accuracy,
+		      dem_error_t *e)
 {
 	static const char *const sections[] = {"pack", NULL};
 	static const char *const shot_sections[] = {"pack", "shot", NULL};
@@ -391,6 +533,11 @@ static int read_scene(dem_scene_t *s, int *method, dem_random_spec_t *sp,
 	}
 	if (*method == METHOD_FRONT) {
 		if (read_law(s, &fp->law, e) || read_front(s, fp, e))
+			return e->code;
+		return dem_scene_check(s, sections, e);
+	}
+	if (*method == METHOD_COMPRESS) {
+		if (read_compress(s, accuracy, cp, planes, e))
 			return e->code;
 		return dem_scene_check(s, sections, e);
 	}
@@ -534,6 +681,181 @@ static int write_front(const dem_front_spec_t *fp, const struct cmdline *cl,
 	return DEM_OK;
 }
 
+/* dempack compress: progress on stderr (unless -q) and the --stages table
+ * at every stage; the writer opens at the first sphere, once the
+ * statistics are complete, so the header carries the densities. */
+struct compress_out {
+	dem_writer_t *w;
+	dem_header_t *h;
+	const dem_compress_stats_t *st;
+	const char *path;
+	int flags, quiet, verbose;
+	dem_error_t *e;
+	double t_packed;
+	const char *vtk_path;
+	dem_vtk_t *vtk;
+	FILE *stages;           /* --stages, a temporary file, or NULL */
+};
+
+static int compress_stage(void *ctx, const dem_compress_stage_t *s)
+{
+	struct compress_out *o = ctx;
+	/* progress: with -v, or once a run takes a second */
+	if (!o->quiet && (o->verbose || s->seconds >= 1))
+		fprintf(stderr, "%s: compress: %-6s batch %d: %zu spheres (%zu added), "
+			"density %.4f, %d iterations, %.2f s\n", PROG,
+			dem_compress_phase_names[s->phase], s->batch, s->n, s->added,
+			s->density, s->iters, s->seconds);
+	if (o->stages)
+		fprintf(o->stages, "%.6f\t%s\t%d\t%zu\t%zu\t%d\t%.6f\n", s->seconds,
+			dem_compress_phase_names[s->phase], s->batch, s->n, s->added,
+			s->iters, s->density);
+	return 0;
+}
+
+static int compress_open(struct compress_out *o)
+{
+	char b[3][32];
+	o->t_packed = dem_wall();
+	dem_fmt_double(b[0], o->st->density);
+	dem_fmt_double(b[1], o->st->density_top);
+	dem_fmt_double(b[2], o->st->density_core);
+	dem_header_set(o->h, "density", "%s", b[0]);
+	dem_header_set(o->h, "density_top", "%s", b[1]);
+	dem_header_set(o->h, "density_core", "%s", b[2]);
+	int rc = dem_writer_open(&o->w, o->path, o->h, o->flags, o->e);
+	if (rc == DEM_OK && o->vtk_path) {
+		char title[80];
+		snprintf(title, sizeof title, "dempack compress: %zu spheres, density %s", o->st->n, b[0]);
+		rc = dem_vtk_open(&o->vtk, o->vtk_path, 3, o->st->n, title, o->e);
+	}
+	return rc;
+}
+
+static int compress_emit(void *ctx, const double *x, double r)
+{
+	struct compress_out *o = ctx;
+	double row[4] = {x[0], x[1], x[2], r};
+	int rc;
+
+	if (!o->w && (rc = compress_open(o)))
+		return rc;
+	if (o->vtk && (rc = dem_vtk_point(o->vtk, x, r, o->e))) {
+		o->vtk = NULL;  /* freed */
+		return rc;
+	}
+	return dem_writer_row(o->w, row, o->e);
+}
+
+/* Pack by compression and write the spheres; h has the common lines. */
+static int write_compress(dem_compress_spec_t *cp, const struct cmdline *cl,
+			  dem_header_t *h, dem_cost_t *cost, dem_error_t *e)
+{
+	char b[8][32];
+	dem_compress_stats_t st = {0};
+	const dem_domain_t *d = &cp->dom;
+	int rc;
+
+	dem_fmt_double(b[0], cp->law.rmin);
+	dem_fmt_double(b[1], cp->law.rmax / cp->law.rmin);
+	dem_fmt_double(b[2], cp->tol);
+	dem_fmt_double(b[3], cp->beta);
+	dem_header_add(h, "method", "compress law=%s rmin=%s lambda=%s tolerance=%s shakes=%d "
+		       "cone=%s relax=%s", dem_radius_names[cp->law.kind], b[0], b[1], b[2],
+		       cp->nshake, b[3], cp->relax ? "true" : "false");
+	if (d->cylinder) {
+		dem_fmt_double(b[0], d->axis[0]);
+		dem_fmt_double(b[1], d->axis[1]);
+		dem_fmt_double(b[2], d->radius);
+		dem_fmt_double(b[3], d->lo[2]);
+		dem_fmt_double(b[4], d->hi[2]);
+		dem_header_set(h, "cylinder", "%s %s %s %s %s", b[0], b[1], b[2], b[3], b[4]);
+	} else {
+		for (int k = 0; k < 3; k++) {
+			dem_fmt_double(b[k], d->lo[k]);
+			dem_fmt_double(b[3 + k], d->hi[k]);
+		}
+		dem_header_set(h, "box", "%s %s %s %s %s %s", b[0], b[1], b[2], b[3], b[4], b[5]);
+	}
+	for (size_t k = 0; k < d->nplane; k++) {
+		const dem_plane_t *q = &d->plane[k];
+		for (int m = 0; m < 3; m++)
+			dem_fmt_double(b[m], q->n[m]);
+		dem_fmt_double(b[3], q->d);
+		dem_header_add(h, "plane", "%s %s %s %s", b[0], b[1], b[2], b[3]);
+	}
+
+	gsl_rng *rng = dem_rng_derive(cl->com.seed, 0);
+	if (!rng)
+		return dem_error_nomem(e, "random generator");
+	struct compress_out o = {NULL, h, &st, cl->com.output,
+				 (cl->com.binary ? DEM_STREAM_BINARY : 0) | (cl->com.gzip ? DEM_STREAM_GZIP : 0),
+				 cl->com.quiet, cl->com.verbose, e, 0, cl->vtk, NULL, NULL};
+	char *tmp = NULL;
+	if (cl->stages) {
+		size_t len = strlen(cl->stages) + 16;
+		tmp = malloc(len);
+		if (!tmp) {
+			gsl_rng_free(rng);
+			return dem_error_nomem(e, "stages");
+		}
+		snprintf(tmp, len, "%s.tmp%ld", cl->stages, (long)getpid());
+		if (!(o.stages = fopen(tmp, "w"))) {
+			rc = dem_error_set(e, DEM_EIO, "%s: %s", cl->stages, strerror(errno));
+			free(tmp);
+			gsl_rng_free(rng);
+			return rc;
+		}
+		fprintf(o.stages, "# dempack compress stages: one row a stage\n"
+			"# seconds\tphase\tbatch\tspheres\tadded\titerations\tdensity\n");
+	}
+	cp->stage = compress_stage;
+	cp->stage_ctx = &o;
+	double t0 = dem_wall();
+	rc = dem_pack_compress(cp, rng, compress_emit, &o, &st, e);
+	gsl_rng_free(rng);
+	if (rc == DEM_OK && !o.w)
+		rc = compress_open(&o);
+	if (rc == DEM_OK && o.vtk) {
+		rc = dem_vtk_close(o.vtk, e);
+		o.vtk = NULL;
+	}
+	if (rc == DEM_OK) {
+		rc = dem_writer_close(o.w, e);
+		o.w = NULL;
+	}
+	if (o.stages) {
+		int bad = ferror(o.stages);
+		if (fclose(o.stages) || bad) {
+			if (rc == DEM_OK)
+				rc = dem_error_set(e, DEM_EIO, "%s: write error", cl->stages);
+		} else if (rc == DEM_OK && rename(tmp, cl->stages)) {
+			rc = dem_error_set(e, DEM_EIO, "%s: %s", cl->stages, strerror(errno));
+		}
+		if (rc)
+			remove(tmp);
+		free(tmp);
+	}
+	if (rc) {
+		dem_vtk_abort(o.vtk);
+		dem_writer_abort(o.w);
+		return rc;
+	}
+	dem_cost_time(cost, "pack", o.t_packed - t0);
+	dem_cost_time(cost, "write", dem_wall() - o.t_packed);
+	dem_cost_count(cost, "objects", (double)st.n);
+	dem_cost_count(cost, "density", st.density);
+	dem_cost_count(cost, "density_top", st.density_top);
+	dem_cost_count(cost, "density_core", st.density_core);
+	dem_cost_count(cost, "batches", (double)st.batches);
+	dem_cost_count(cost, "iterations", (double)st.iters);
+	dem_cost_count(cost, "relax_steps", (double)st.steps);
+	dem_cost_count(cost, "detections", (double)st.detections);
+	if (st.removed)
+		dem_cost_count(cost, "removed", (double)st.removed);
+	return DEM_OK;
+}
+
 static int shots_emit(void *ctx, const dem_shot_t *sh)
 {
 	struct emit_ctx *c = ctx;
@@ -635,6 +957,8 @@ int main(int argc, char **argv)
 	dem_random_spec_t sp;
 	dem_front_spec_t fp = {0};
 	dem_shots_spec_t hp = {0};
+	dem_compress_spec_t cp;
+	dem_plane_t *planes = NULL;
 	dem_cost_t cost;
 	int rc, method;
 
@@ -654,10 +978,11 @@ int main(int argc, char **argv)
 		goto fail;
 	if ((rc = dem_scene_override_all(scene, cl.com.ov, cl.com.nov, &e)))
 		goto fail;
-	if ((rc = read_scene(scene, &method, &sp, &fp, &hp, &e)))
+	if ((rc = read_scene(scene, &method, &sp, &fp, &hp, &cp, &planes, cl.com.accuracy, &e)))
 		goto fail;
 	if (cl.com.dump) {
 		free((double *)fp.polygon);
+		free(planes);
 		dem_scene_dump(scene, stdout);
 		dem_scene_free(scene);
 		free(args);
@@ -682,7 +1007,7 @@ int main(int argc, char **argv)
 	/* The domain depends on the radii drawn: size it first, then write. */
 	dem_header_t h;
 	const char *axes[] = {"x", "y", "z"};
-	int dim = method == METHOD_FRONT ? 2 : sp.dim;
+	int dim = method == METHOD_FRONT ? 2 : method == METHOD_COMPRESS ? 3 : sp.dim;
 	dem_header_init(&h, "particles", 1, dim);
 	for (int d = 0; d < dim; d++)
 		dem_header_add_col(&h, axes[d], DEM_F64, "m");
@@ -691,6 +1016,11 @@ int main(int argc, char **argv)
 	dem_header_add(&h, "seed", "%lu", cl.com.seed);
 	if (method == METHOD_FRONT) {
 		if ((rc = write_front(&fp, &cl, &h, &cost, &e)))
+			goto fail_h;
+		goto done;
+	}
+	if (method == METHOD_COMPRESS) {
+		if ((rc = write_compress(&cp, &cl, &h, &cost, &e)))
 			goto fail_h;
 		goto done;
 	}
@@ -731,6 +1061,7 @@ int main(int argc, char **argv)
 	dem_cost_count(&cost, "objects", (double)sp.n);
 done:
 	free((double *)fp.polygon);
+	free(planes);
 	dem_header_free(&h);
 	dem_scene_free(scene);
 	free(args);
@@ -747,6 +1078,7 @@ fail:
 		fprintf(stderr, "Try '%s --help' for more information.\n", PROG);
 	dem_writer_abort(w);
 	free((double *)fp.polygon);
+	free(planes);
 	dem_scene_free(scene);
 	free(args);
 	dem_common_free(&cl.com);

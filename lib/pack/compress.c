@@ -13,8 +13,16 @@
 
 #define NONE UINT32_MAX
 
+/* Overlap accepted after the relaxation, relative to the smaller radius:
+ * rounding only (the contract is 1e-9). */
+#define ACCEPT 1e-10
+
+static int converged(double pc, double pp, double tol);
+
+static int cmp_zi(const void *a, const void *b);
+
 const char *const dem_compress_phase_names[] = {
-	"init", "global", "shake", "refill", NULL
+	"init", "global", "shake", "relax", "refill", NULL
 };
 
 /* How the spheres move in one iteration. */
@@ -30,13 +38,13 @@ typedef struct pk {
 	const dem_domain_t *dom;
 	gsl_rng *rng;
 	dem_error_t *e;
-	double vol, volsum, rmax, rmin, bumin, bumax;
+	double vol, volsum, r3sum, rmax, rmin, bumin, bumax;
 	struct timespec t0;
 	dem_compress_stats_t st;
 
 	size_t n, cap;
-	double *x[3], *r, *bu, *v[3];
-	unsigned char *mprev, *mnow;
+	double *x[3], *r, *bu, *v[3], *u[3], *f[3], *im, *xb[3];
+	unsigned char *mprev, *mnow, *isact;
 	struct zi *ord;
 
 	/* neighbour lists (CSR) from one detection */
@@ -53,6 +61,11 @@ typedef struct pk {
 	double h;
 	size_t gn[3];
 	uint32_t *head, *next;
+
+	/* relaxation: active spheres, pairs with one at least */
+	double zfreeze, zadd;   /* relax above zfreeze; lowest refilled */
+	uint32_t *act;
+	size_t nact, npair;
 } pk_t;
 
 void dem_domain_box(dem_domain_t *d, const double lo[3], const double hi[3])
@@ -79,7 +92,7 @@ void dem_compress_spec_init(dem_compress_spec_t *s)
 {
 	memset(s, 0, sizeof *s);
 	s->init_density = 0.3;
-	s->tol = 1e-4;
+	s->tol = 1e-3;
 	s->nshake = 5;
 	s->beta = 0.5;
 	s->max_iter = 200;
@@ -87,6 +100,14 @@ void dem_compress_spec_init(dem_compress_spec_t *s)
 	s->max_batches = 100;
 	s->buffer = 1;
 	s->nroll = 20;
+	s->relax = 1;
+	s->relax_overlap = 0.1;
+	s->relax_ftol = 1e-3;
+	s->relax_iter = 20000;
+	s->relax_depth = 5;
+	s->relax_batch = 0.01;
+	s->relax_dt = 0.3;
+	s->relax_skin = 0.5;
 }
 
 static double now(const pk_t *p)
@@ -184,7 +205,8 @@ static int grow(pk_t *p, size_t need)
 	while (cap < need)
 		cap *= 2;
 	double **dv[] = {&p->x[0], &p->x[1], &p->x[2], &p->r, &p->bu,
-			 &p->v[0], &p->v[1], &p->v[2]};
+			 &p->v[0], &p->v[1], &p->v[2], &p->u[0], &p->u[1], &p->u[2],
+			 &p->f[0], &p->f[1], &p->f[2], &p->im, &p->xb[0], &p->xb[1], &p->xb[2]};
 	for (size_t k = 0; k < sizeof dv / sizeof *dv; k++) {
 		double *q = realloc(*dv[k], cap * sizeof *q);
 		if (!q)
@@ -206,7 +228,13 @@ static int grow(pk_t *p, size_t need)
 	uint32_t *nx = realloc(p->next, cap * sizeof *nx);
 	if (nx)
 		p->next = nx;
-	if (!m1 || !m2 || !o || !off || !nx)
+	uint32_t *ac = realloc(p->act, cap * sizeof *ac);
+	if (ac)
+		p->act = ac;
+	unsigned char *ia = realloc(p->isact, cap);
+	if (ia)
+		p->isact = ia;
+	if (!m1 || !m2 || !o || !off || !nx || !ac || !ia)
 		return dem_error_nomem(p->e, "sphere arrays");
 	p->cap = cap;
 	return DEM_OK;
@@ -223,9 +251,11 @@ static void add_sphere(pk_t *p, const double *c, double r)
 	for (int k = 0; k < 3; k++)
 		p->x[k][i] = c[k];
 	p->r[i] = r;
+	p->im[i] = pow(p->rmin / r, 3);    /* 1 / m, m = (r / Rmin)^3 */
 	p->bu[i] = p->bumax;
 	p->mprev[i] = 1;
 	p->volsum += sphere_volume(r);
+	p->r3sum += r * r * r;
 }
 
 /* Eq. 6.7 with heights (Eq. 6.5) measured up from the floor, so P_e > 0 and
@@ -448,6 +478,7 @@ static int refill(pk_t *p, size_t *added)
 			continue;
 		}
 		settle_one(p, c, r);
+		p->zadd = fmin(p->zadd, c[2]);
 		if (grow(p, p->n + 1))
 			return p->e->code;
 		add_sphere(p, c, r);
@@ -617,6 +648,422 @@ static int settle(pk_t *p, enum mode m, int *iters)
 	return DEM_OK;
 }
 
+/* ---- relaxation under gravity (beyond the thesis) ------------------------- */
+
+/* Move a sphere at c back inside every wall (projection onto each wall in
+ * turn; the domain is convex, so a few rounds settle a small violation),
+ * leaving the clearance margin. */
+static void wall_project(const dem_domain_t *d, double *c, double r, double margin)
+{
+	double rr = r + margin;
+	for (int round = 0; round < 4; round++) {
+		for (int k = 0; k < 3; k++) {
+			if (c[k] < d->lo[k] + rr)
+				c[k] = d->lo[k] + rr;
+			if (c[k] > d->hi[k] - rr)
+				c[k] = d->hi[k] - rr;
+		}
+		if (d->cylinder) {
+			double qx = c[0] - d->axis[0], qy = c[1] - d->axis[1];
+			double q = sqrt(qx * qx + qy * qy), lim = d->radius - rr;
+			if (q > lim) {
+				c[0] = d->axis[0] + qx * lim / q;
+				c[1] = d->axis[1] + qy * lim / q;
+			}
+		}
+		int ok = 1;
+		for (size_t k = 0; k < d->nplane; k++) {
+			const dem_plane_t *pl = &d->plane[k];
+			double g = pl->n[0] * c[0] + pl->n[1] * c[1] + pl->n[2] * c[2] - pl->d - rr;
+			if (g < 0) {
+				for (int m = 0; m < 3; m++)
+					c[m] -= g * pl->n[m];
+				ok = 0;
+			}
+		}
+		if (ok)
+			break;
+	}
+}
+
+/* The relaxation moves only the active spheres, those above p->zfreeze
+ * (the mobility of Ch. 6.2.3: deep spheres under a jammed packing do not
+ * move); the others are fixed obstacles.  Neighbour pairs: D-cell over the
+ * boxes, grown by skin/2 on every side, of the spheres that can touch an
+ * active one, so the list holds every contact while no sphere moves more
+ * than skin/2 from where it was at the build (the Verlet list rule); pairs
+ * of two fixed spheres are dropped.  Spheres within skin of a wall are
+ * flagged (mnow) for the wall terms. */
+static int relax_pairs(pk_t *p, double skin)
+{
+	double zlow = HUGE_VAL;
+	p->nact = 0;
+	for (size_t i = 0; i < p->n; i++)
+		if (p->isact[i]) {
+			p->act[p->nact++] = (uint32_t)i;
+			zlow = fmin(zlow, p->x[2][i]);
+		}
+	double zcut = zlow - 2 * p->rmax - skin;
+	size_t m = 0;
+	for (size_t i = 0; i < p->n; i++)
+		if (p->x[2][i] > zcut)
+			p->ord[m++].i = (uint32_t)i;   /* in the box set */
+	if (p->boxcap < p->n) {
+		dem_boxes_free(&p->box);
+		if (dem_boxes_alloc(&p->box, 3, p->cap) != DEM_OK)
+			return dem_error_nomem(p->e, "bounding boxes");
+		p->boxcap = p->cap;
+	}
+	p->box.n = m;
+	for (size_t b = 0; b < m; b++) {
+		uint32_t i = p->ord[b].i;
+		double h = p->r[i] + 0.5 * skin;
+		for (int k = 0; k < 3; k++) {
+			p->box.lo[k][b] = p->x[k][i] - h;
+			p->box.hi[k][b] = p->x[k][i] + h;
+			p->v[k][i] = p->x[k][i];        /* where the list was built */
+		}
+		double c[3] = {p->x[0][i], p->x[1][i], p->x[2][i]};
+		p->mnow[i] = wall_gap(p->dom, c, p->r[i]) < skin;
+	}
+	p->pairs.n = 0;
+	int rc = dem_detect(&p->box, &p->dopt, &p->pairs, NULL, p->e);
+	if (rc)
+		return rc;
+	if (p->pairs.nomem)
+		return dem_error_nomem(p->e, "neighbour pairs");
+	p->st.detections++;
+	p->st.pairs += p->pairs.n;
+	if (p->adjcap < 2 * p->pairs.n) {
+		uint32_t *a = realloc(p->adj, 2 * p->pairs.n * sizeof *a);
+		if (!a)
+			return dem_error_nomem(p->e, "neighbour lists");
+		p->adj = a;
+		p->adjcap = 2 * p->pairs.n;
+	}
+	size_t q = 0;
+	for (size_t k = 0; k < p->pairs.n; k++) {
+		uint32_t i = p->ord[p->pairs.p[k].i].i, j = p->ord[p->pairs.p[k].j].i;
+		if (!p->isact[i] && !p->isact[j])
+			continue;
+		p->adj[2 * q] = i;
+		p->adj[2 * q + 1] = j;
+		q++;
+	}
+	p->npair = q;
+	return DEM_OK;
+}
+
+static int active(const pk_t *p, uint32_t i)
+{
+	return p->isact[i];
+}
+
+static void put(pk_t *p, uint32_t i, double *c, double margin)
+{
+	if (p->mnow[i])
+		wall_project(p->dom, c, p->r[i], margin);
+	p->x[0][i] = c[0];
+	p->x[1][i] = c[1];
+	p->x[2][i] = c[2];
+}
+
+/* One Gauss-Seidel sweep over the pair list: each overlapping pair (closer
+ * than the radii plus margin) pushed apart along its centre line, the
+ * shares in inverse proportion to the masses (r^3; a fixed sphere does not
+ * move), each moved sphere put back inside the walls.  Returns the deepest
+ * overlap met, relative to the smaller radius. */
+static double relax_sweep(pk_t *p, double margin)
+{
+	double worst = 0;
+	const uint32_t *a = p->adj;
+	const double *x = p->x[0], *y = p->x[1], *z = p->x[2], *r = p->r;
+	for (size_t k = 0; k < p->npair; k++) {
+		uint32_t i = a[2 * k], j = a[2 * k + 1];
+		double dx = x[j] - x[i], dy = y[j] - y[i], dz = z[j] - z[i];
+		double s = r[i] + r[j] + margin, d2 = dx * dx + dy * dy + dz * dz;
+		if (d2 >= s * s)
+			continue;
+		double d = sqrt(d2), ov = s - d;
+		worst = fmax(worst, (ov - margin) / fmin(r[i], r[j]));
+		if (d == 0) {
+			dz = d = 1;
+		}
+		double wi = active(p, i) ? r[j] * r[j] * r[j] : 0;
+		double wj = active(p, j) ? r[i] * r[i] * r[i] : 0;
+		if (wi + wj == 0)
+			continue;
+		double fi = ov * wi / ((wi + wj) * d), fj = ov * wj / ((wi + wj) * d);
+		double ci[3] = {x[i] - fi * dx, y[i] - fi * dy, z[i] - fi * dz};
+		double cj[3] = {x[j] + fj * dx, y[j] + fj * dy, z[j] + fj * dz};
+		if (wi > 0)
+			put(p, i, ci, margin);
+		if (wj > 0)
+			put(p, j, cj, margin);
+	}
+	return worst;
+}
+
+/* Contact forces of the soft relaxation: a linear spring of stiffness k on
+ * every overlap between spheres or with a wall, and the weight m g along
+ * -z (g = 0: none), m = (r / Rmin)^3.  Returns the deepest overlap,
+ * relative to the smaller radius. */
+static double forces(pk_t *p, double k, double g)
+{
+	const uint32_t *a = p->adj;
+	const double *x = p->x[0], *y = p->x[1], *z = p->x[2], *r = p->r;
+	double *fx = p->f[0], *fy = p->f[1], *fz = p->f[2], worst = 0;
+	const dem_domain_t *d = p->dom;
+	for (size_t q = 0; q < p->nact; q++) {
+		uint32_t i = p->act[q];
+		double m = r[i] / p->rmin;
+		fx[i] = fy[i] = 0;
+		fz[i] = -g * m * m * m;
+	}
+	for (size_t q = 0; q < p->npair; q++) {
+		uint32_t i = a[2 * q], j = a[2 * q + 1];
+		double dx = x[j] - x[i], dy = y[j] - y[i], dz = z[j] - z[i];
+		double s = r[i] + r[j], d2 = dx * dx + dy * dy + dz * dz;
+		if (d2 >= s * s || d2 == 0)
+			continue;
+		double dd = sqrt(d2), ov = s - dd, f = k * ov / dd;
+		if (ov > worst * r[i] || ov > worst * r[j])
+			worst = ov / (r[i] < r[j] ? r[i] : r[j]);
+		/* a fixed sphere's force is computed and never used */
+		fx[i] -= f * dx; fy[i] -= f * dy; fz[i] -= f * dz;
+		fx[j] += f * dx; fy[j] += f * dy; fz[j] += f * dz;
+	}
+	for (size_t q = 0; q < p->nact; q++) {
+		uint32_t i = p->act[q];
+		if (!p->mnow[i])
+			continue;       /* far from every wall */
+		double c[3] = {x[i], y[i], z[i]}, *fc[3] = {&fx[i], &fy[i], &fz[i]};
+		for (int e = 0; e < 3; e++) {
+			double lo = r[i] - (c[e] - d->lo[e]), hi = r[i] - (d->hi[e] - c[e]);
+			if (lo > 0)
+				*fc[e] += k * lo;
+			if (hi > 0)
+				*fc[e] -= k * hi;
+			worst = fmax(worst, fmax(lo, hi) / r[i]);
+		}
+		if (d->cylinder) {
+			double qx = c[0] - d->axis[0], qy = c[1] - d->axis[1];
+			double qq = sqrt(qx * qx + qy * qy), ov = qq + r[i] - d->radius;
+			if (ov > 0 && qq > 0) {
+				fx[i] -= k * ov * qx / qq;
+				fy[i] -= k * ov * qy / qq;
+				worst = fmax(worst, ov / r[i]);
+			}
+		}
+		for (size_t e = 0; e < d->nplane; e++) {
+			const dem_plane_t *pl = &d->plane[e];
+			double ov = r[i] - (pl->n[0] * c[0] + pl->n[1] * c[1] + pl->n[2] * c[2] - pl->d);
+			if (ov > 0) {
+				for (int m = 0; m < 3; m++)
+					*fc[m] += k * ov * pl->n[m];
+				worst = fmax(worst, ov / r[i]);
+			}
+		}
+	}
+	return worst;
+}
+
+/* Eq. 6.7 over the active spheres. */
+static double active_energy(const pk_t *p)
+{
+	double s = 0;
+	for (size_t q = 0; q < p->nact; q++) {
+		uint32_t i = p->act[q];
+		double r = p->r[i];
+		s += (p->x[2][i] - p->dom->lo[2]) * r * r * r;
+	}
+	return s;
+}
+
+/* FIRE minimisation (Bitzek et al. 2006, with the parameters of their
+ * paper) of the soft energy over the active spheres.  With gravity g > 0
+ * it stops when the mean fall of the active spheres over `window` steps is
+ * below ftol Rmin (the energy test of Eq. 6.8 in another form); with g = 0
+ * when no overlap is deeper than otol of the smaller radius. */
+static int fire(pk_t *p, double k, double g, double ftol, double otol,
+		int maxsteps, double skin, int *steps)
+{
+	const double finc = 1.1, fdec = 0.5, a0 = 0.1, fa = 0.99;
+	const int nmin = 5, window = 100;
+	double t0 = sqrt(1 / k);        /* m = 1 for Rmin */
+	double dt = 0.05 * t0, dtmax = p->s->relax_dt * t0, alpha = a0;
+	for (size_t q = 0; q < p->nact; q++)
+		for (int d = 0; d < 3; d++)
+			p->u[d][p->act[q]] = 0;
+	double r3 = 0;
+	for (size_t q = 0; q < p->nact; q++)
+		r3 += pow(p->r[p->act[q]], 3);
+	int rc, since = 0, s;
+	double worst = forces(p, k, g), pe = active_energy(p);
+	for (s = 0; s < maxsteps; s++) {
+		if (g == 0 && worst <= otol)
+			break;
+		if (g > 0 && s > 0 && s % window == 0) {
+			double pn = active_energy(p);
+			if (pe - pn < ftol * p->rmin * r3)
+				break;
+			pe = pn;
+		}
+		double fv = 0, ff = 0, vv = 0;
+		for (size_t q = 0; q < p->nact; q++) {
+			uint32_t i = p->act[q];
+			double f0 = p->f[0][i], f1 = p->f[1][i], f2 = p->f[2][i];
+			double u0 = p->u[0][i], u1 = p->u[1][i], u2 = p->u[2][i];
+			fv += f0 * u0 + f1 * u1 + f2 * u2;
+			ff += f0 * f0 + f1 * f1 + f2 * f2;
+			vv += u0 * u0 + u1 * u1 + u2 * u2;
+		}
+		double mix = 0, keep = 0;
+		if (fv > 0) {
+			mix = alpha * sqrt(vv / (ff > 1e-300 ? ff : 1e-300));
+			keep = 1 - alpha;
+			if (++since > nmin) {
+				dt = dt * finc < dtmax ? dt * finc : dtmax;
+				alpha *= fa;
+			}
+		} else {        /* uphill: stop, restart slowly */
+			since = 0;
+			dt *= fdec;
+			alpha = a0;
+		}
+		/* v <- (1 - a) v + a |v| F/|F|; then semi-implicit Euler; the
+		 * largest move since the list build along the way */
+		double far = 0;
+		for (size_t q = 0; q < p->nact; q++) {
+			uint32_t i = p->act[q];
+			double im = p->im[i], w = 0;
+			for (int d = 0; d < 3; d++) {
+				double u = keep * p->u[d][i] + mix * p->f[d][i] + dt * im * p->f[d][i];
+				double x = p->x[d][i] + dt * u;
+				p->u[d][i] = u;
+				p->x[d][i] = x;
+				w += (x - p->v[d][i]) * (x - p->v[d][i]);
+			}
+			far = w > far ? w : far;
+		}
+		if (far > 0.0625 * skin * skin && (rc = relax_pairs(p, skin)))
+			return rc;
+		worst = forces(p, k, g);
+	}
+	*steps += s;
+	p->st.steps += (size_t)s;
+	return DEM_OK;
+}
+
+/* Renumber the spheres in cell order (cells of the insertion grid, x
+ * fastest), so neighbours sit close in memory during the relaxation. */
+static void reorder(pk_t *p)
+{
+	for (size_t i = 0; i < p->n; i++) {
+		size_t c = (cell_of(p, 2, p->x[2][i]) * p->gn[1] + cell_of(p, 1, p->x[1][i]))
+			   * p->gn[0] + cell_of(p, 0, p->x[0][i]);
+		p->ord[i].z = (double)c;
+		p->ord[i].i = (uint32_t)i;
+	}
+	qsort(p->ord, p->n, sizeof *p->ord, cmp_zi);
+	double *a[] = {p->x[0], p->x[1], p->x[2], p->r, p->im, p->bu};
+	double *tmp = p->f[0];
+	for (size_t k = 0; k < sizeof a / sizeof *a; k++) {
+		for (size_t i = 0; i < p->n; i++)
+			tmp[i] = a[k][p->ord[i].i];
+		memcpy(a[k], tmp, p->n * sizeof *tmp);
+	}
+}
+
+/* The last resort when the sweeps leave an overlap (rare: seen where a
+ * plane meets the cylinder in a wedge): the upper sphere of every pair still overlapping, and any sphere
+ * across a wall, is taken out, so the packing stays valid; counted in
+ * stats.removed. */
+static void drop_offenders(pk_t *p)
+{
+	unsigned char *out = p->mprev;
+	memset(out, 0, p->n);
+	for (size_t k = 0; k < p->npair; k++) {
+		uint32_t i = p->adj[2 * k], j = p->adj[2 * k + 1];
+		double dx = p->x[0][j] - p->x[0][i], dy = p->x[1][j] - p->x[1][i];
+		double dz = p->x[2][j] - p->x[2][i], s = p->r[i] + p->r[j];
+		double lim = s - ACCEPT * fmin(p->r[i], p->r[j]);
+		if (dx * dx + dy * dy + dz * dz < lim * lim && !out[i] && !out[j])
+			out[dz > 0 && active(p, j) ? j : active(p, i) ? i : j] = 1;
+	}
+	size_t m = 0;
+	for (size_t i = 0; i < p->n; i++) {
+		double c[3] = {p->x[0][i], p->x[1][i], p->x[2][i]}, r = p->r[i];
+		if (out[i] || wall_gap(p->dom, c, r) < -ACCEPT * r) {
+			p->volsum -= sphere_volume(r);
+			p->r3sum -= r * r * r;
+			p->st.removed++;
+			continue;
+		}
+		for (int d = 0; d < 3; d++)
+			p->x[d][m] = c[d];
+		p->r[m] = r;
+		p->im[m] = p->im[i];
+		p->bu[m] = p->bu[i];
+		m++;
+	}
+	p->n = m;
+}
+
+/* Relaxation (beyond the thesis): the active spheres settle under their
+ * weight along the compression direction as frictionless soft spheres,
+ * the energy of overlap springs plus Eq. 6.7 minimised by FIRE -- so they
+ * slide past one another collectively, which the move-to-contact steps of
+ * Boxes 6.1-6.2 cannot do (frictionless spheres settled so reach random
+ * close packing: Silbert et al. 2002).  The spring is as stiff as makes the
+ * deepest overlap about relax_overlap Rmin under the column's weight.  The
+ * weight is then taken off and FIRE runs until no overlap is deeper than
+ * 1e-6 of a radius, the packing expanding upwards into the free space;
+ * Gauss-Seidel projection sweeps then leave a gap of 1e-12 Rmin at every
+ * contact and wall. */
+static int relax(pk_t *p, int *iters)
+{
+	double skin = p->s->relax_skin * p->rmin;
+	reorder(p);
+	/* the active set is fixed for the whole relaxation */
+	for (size_t i = 0; i < p->n; i++)
+		p->isact[i] = p->x[2][i] > p->zfreeze;
+	for (int d = 0; d < 3; d++)
+		memcpy(p->xb[d], p->x[d], p->n * sizeof *p->xb[d]);
+	double pe0 = energy(p);
+	size_t n0 = p->n;
+	int rc = relax_pairs(p, skin);
+	if (rc)
+		return rc;
+	double rm = 0.5 * (p->rmin + p->rmax), m = pow(rm / p->rmin, 3);
+	double layers = (p->dom->hi[2] - p->dom->lo[2]) / (2 * rm);
+	double k = layers * m / (p->s->relax_overlap * p->rmin);       /* g = 1 */
+	int it = 0;
+	if ((rc = fire(p, k, 1, p->s->relax_ftol, 0, p->s->relax_iter, skin, &it)))
+		return rc;
+	if ((rc = fire(p, k, 0, 0, 1e-6, p->s->relax_iter, skin, &it)))
+		return rc;
+	if ((rc = relax_pairs(p, skin)))
+		return rc;
+	for (size_t q = 0; q < p->nact; q++) {
+		uint32_t i = p->act[q];
+		double c[3] = {p->x[0][i], p->x[1][i], p->x[2][i]};
+		put(p, i, c, 1e-12 * p->rmin);
+	}
+	double w = 1;
+	for (int sw = 0; sw < 2000 && w > ACCEPT; sw++)
+		w = relax_sweep(p, 1e-12 * p->rmin);
+	if (w > ACCEPT)
+		drop_offenders(p);
+	/* kept only if it lowered Eq. 6.7: the expansion on unloading can
+	 * outweigh a small settlement */
+	if (p->n == n0 && energy(p) > pe0)
+		for (int d = 0; d < 3; d++)
+			memcpy(p->x[d], p->xb[d], p->n * sizeof *p->x[d]);
+	*iters += it;
+	return DEM_OK;
+}
+
 static int report(pk_t *p, dem_compress_phase_t ph, int batch, size_t added,
 		  int iters)
 {
@@ -633,7 +1080,7 @@ static int report(pk_t *p, dem_compress_phase_t ph, int batch, size_t added,
 
 /* Box 6.2: global compression, then rounds of shaking and random
  * compression until the energy stops falling. */
-static int compress(pk_t *p, int batch)
+static int compress(pk_t *p, int batch, size_t added)
 {
 	int it = 0, rc = settle(p, GLOBAL, &it);
 	if (rc || (rc = report(p, DEM_COMPRESS_GLOBAL, batch, 0, it)))
@@ -650,7 +1097,15 @@ static int compress(pk_t *p, int batch)
 			return rc;
 		pc = energy(p);
 	} while (!converged(pc, pp, p->s->tol) && ++loop < p->s->max_loops);
-	return report(p, DEM_COMPRESS_SHAKE, batch, 0, it);
+	if ((rc = report(p, DEM_COMPRESS_SHAKE, batch, 0, it)) || !p->s->relax
+	    || (double)added < p->s->relax_batch * (double)p->n)
+		return rc;
+	it = 0;
+	if ((rc = relax(p, &it)))
+		return rc;
+	if ((rc = settle(p, GLOBAL, &it)))
+		return rc;
+	return report(p, DEM_COMPRESS_RELAX, batch, 0, it);
 }
 
 /* ---- the whole ------------------------------------------------------------ */
@@ -665,7 +1120,7 @@ static double domain_volume(const dem_domain_t *d)
 	if (!d->nplane)
 		return d->cylinder ? DEM_PI * d->radius * d->radius * w[2]
 				   : w[0] * w[1] * w[2];
-	enum { M = 64 };
+	enum { M = 200 };
 	size_t in = 0;
 	for (int a = 0; a < M; a++)
 		for (int b = 0; b < M; b++)
@@ -704,7 +1159,9 @@ static int check_spec(const dem_compress_spec_t *s, dem_error_t *e)
 
 static void release(pk_t *p)
 {
-	double *dv[] = {p->x[0], p->x[1], p->x[2], p->r, p->bu, p->v[0], p->v[1], p->v[2]};
+	double *dv[] = {p->x[0], p->x[1], p->x[2], p->r, p->bu, p->v[0], p->v[1], p->v[2],
+			p->u[0], p->u[1], p->u[2], p->f[0], p->f[1], p->f[2], p->im,
+			p->xb[0], p->xb[1], p->xb[2]};
 	for (size_t k = 0; k < sizeof dv / sizeof *dv; k++)
 		free(dv[k]);
 	free(p->mprev);
@@ -714,9 +1171,52 @@ static void release(pk_t *p)
 	free(p->adj);
 	free(p->head);
 	free(p->next);
+	free(p->act);
+	free(p->isact);
 	dem_boxes_free(&p->box);
 	dem_pairs_free(&p->pairs);
 	dem_detect_ws_free(p->ws);
+}
+
+
+
+/* The densities of the finished packing besides the whole domain's:
+ * below the top of the packing (the highest sphere's top), and in its core
+ * -- the points of the domain at least one largest diameter from every
+ * wall and below the top less one diameter.  Points of a stratified
+ * sample (one in each cube of side Rmin / 2, placed at random in it)
+ * count as covered when inside a sphere. */
+static void measure(pk_t *p)
+{
+	const dem_domain_t *d = p->dom;
+	double ztop = d->lo[2], h = 0.5 * p->rmin, layer = 2 * p->rmax;
+	for (size_t i = 0; i < p->n; i++)
+		ztop = fmax(ztop, p->x[2][i] + p->r[i]);
+	p->st.ztop = ztop;
+	grid_build(p);
+	size_t m[3], in[2] = {0, 0}, cov[2] = {0, 0};
+	for (int k = 0; k < 3; k++)
+		m[k] = (size_t)ceil((d->hi[k] - d->lo[k]) / h);
+	for (size_t c = 0; c < m[2]; c++)
+		for (size_t b = 0; b < m[1]; b++)
+			for (size_t a = 0; a < m[0]; a++) {
+				double q[3] = {d->lo[0] + ((double)a + gsl_rng_uniform(p->rng)) * h,
+					       d->lo[1] + ((double)b + gsl_rng_uniform(p->rng)) * h,
+					       d->lo[2] + ((double)c + gsl_rng_uniform(p->rng)) * h};
+				if (q[2] > ztop)
+					continue;
+				double g = wall_gap(d, q, 0);
+				if (g < 0)
+					continue;
+				int core = g >= layer && q[2] <= ztop - layer;
+				int hit = grid_overlaps(p, q, 0);
+				in[0]++;
+				cov[0] += (size_t)hit;
+				in[1] += (size_t)core;
+				cov[1] += (size_t)(core && hit);
+			}
+	p->st.density_top = in[0] ? (double)cov[0] / (double)in[0] : 0;
+	p->st.density_core = in[1] ? (double)cov[1] / (double)in[1] : 0;
 }
 
 static int run(pk_t *p)
@@ -724,18 +1224,22 @@ static int run(pk_t *p)
 	int rc = initial(p);
 	if (rc || (rc = report(p, DEM_COMPRESS_INIT, 0, p->n, 0)))
 		return rc;
+	p->zfreeze = -HUGE_VAL;
+	size_t added = p->n;
 	for (int batch = 0;; batch++) {
-		if ((rc = compress(p, batch)))
+		if ((rc = compress(p, batch, added)))
 			return rc;
 		if (batch >= p->s->max_batches || full(p))
 			break;
-		size_t added = 0;
+		added = 0;
+		p->zadd = HUGE_VAL;
 		if ((rc = refill(p, &added)))
 			return rc;
 		if ((rc = report(p, DEM_COMPRESS_REFILL, batch + 1, added, 0)))
 			return rc;
 		if (!added)
 			break;
+		p->zfreeze = p->zadd - 2 * p->rmax * p->s->relax_depth;
 		p->st.batches++;
 	}
 	return DEM_OK;
@@ -771,16 +1275,18 @@ int dem_pack_compress(const dem_compress_spec_t *s, gsl_rng *r,
 		rc = grow(&p, 1);
 	if (!rc)
 		rc = run(&p);
-	for (size_t i = 0; !rc && emit && i < p.n; i++) {
-		double c[3] = {p.x[0][i], p.x[1][i], p.x[2][i]};
-		rc = emit(ctx, c, p.r[i]);
-	}
+	if (!rc && p.n)
+		measure(&p);
 	p.st.n = p.n;
 	p.st.density = p.volsum / p.vol;
 	p.st.pe = energy(&p);
 	p.st.seconds = now(&p);
-	if (stats)
+	if (stats)      /* complete before the first emit, for a header */
 		*stats = p.st;
+	for (size_t i = 0; !rc && emit && i < p.n; i++) {
+		double c[3] = {p.x[0][i], p.x[1][i], p.x[2][i]};
+		rc = emit(ctx, c, p.r[i]);
+	}
 	release(&p);
 	return rc;
 }

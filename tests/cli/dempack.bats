@@ -560,3 +560,122 @@ inside_polygon() {
 	     END { if (bad || i != n || k != n) { print bad, i, k; exit 1 } }' "$T/p" "$T/p.vtk"
 	ls "$T" | { ! grep -q tmp; }
 }
+
+# dempack compress (Ch. 6).  Every sphere inside the walls of the stream's
+# header (box, cylinder, planes), to 1e-9 of its radius.
+inside_domain() {
+	awk 'BEGIN { np = 0 }
+	     /^# box / { b = 1; for (k = 0; k < 6; k++) B[k] = $(3 + k) }
+	     /^# cylinder / { c = 1; cx = $3; cy = $4; R = $5; B[2] = $6; B[5] = $7 }
+	     /^# plane / { N[np, 0] = $3; N[np, 1] = $4; N[np, 2] = $5; D[np] = $6; np++ }
+	     /^#/ { next }
+	     { x = $1; y = $2; z = $3; r = $4; t = 1e-9 * r; k++
+	       if (b && (x - r < B[0] - t || y - r < B[1] - t || x + r > B[3] + t || y + r > B[4] + t)) bad++
+	       if (z - r < B[2] - t || z + r > B[5] + t) bad++
+	       if (c && sqrt((x - cx) ^ 2 + (y - cy) ^ 2) + r > R + t) bad++
+	       for (p = 0; p < np; p++)
+		 if (N[p, 0] * x + N[p, 1] * y + N[p, 2] * z - D[p] < r - t) bad++ }
+	     END { if (bad || !k) { print "outside:", bad + 0, "of", k + 0; exit 1 } }' "$1"
+}
+
+# The density of a 3D stream in a box: sphere volume over the box's.
+box_density() {
+	awk '/^# box / { V = ($6 - $3) * ($7 - $4) * ($8 - $5) } /^#/ { next }
+	     { s += 4 / 3 * 3.141592653589793 * $4 ^ 3 } END { printf "%.17g\n", s / V }' "$1"
+}
+
+@test "dempack compress: a box of URD spheres, no overlap (demdetect brute force), inside, the density in the header" {
+	dempack compress --box 0:0:0:14:14:14 --rmin 0.5 --lambda 2 --seed 3 -q >"$T/p" 2>"$T/err"
+	head -1 "$T/p" | grep -q '^# dem particles 1$'
+	grep -q '^# dim 3$' "$T/p"
+	grep -q '^# columns x:f64:m y:f64:m z:f64:m r:f64:m$' "$T/p"
+	grep -q '^# method compress law=urd rmin=0.5 lambda=2 .*relax=true$' "$T/p"
+	grep -q '^# box 0 0 0 14 14 14$' "$T/p"
+	[ "$(rows "$T/p")" -gt 600 ]
+	[ "$(demdetect -a brute --shape 1e-9 -c "$T/p" 2>/dev/null)" -eq 0 ]
+	inside_domain "$T/p"
+	rho=$(awk '/^# density / { print $3 }' "$T/p")
+	close_to "$(box_density "$T/p")" "$rho" 1e-12
+	# the core (a diameter from the walls) denser than the whole, and than
+	# random loose packing, 0.555 (Onoda and Liniger 1990)
+	core=$(awk '/^# density_core / { print $3 }' "$T/p")
+	awk -v r="$rho" -v c="$core" 'BEGIN { exit !(c > r && c > 0.555) }'
+	tail -1 "$T/err" | grep -q "^dempack: cost: wall_s=.* objects=$(rows "$T/p") density=.* density_core=.* relax_steps="
+}
+
+@test "dempack compress --no-relax: the thesis's stages alone, valid and looser" {
+	dempack compress --box 0:0:0:12:12:12 --rmin 0.5 --lambda 2 --seed 5 -q >"$T/a"
+	dempack compress --box 0:0:0:12:12:12 --rmin 0.5 --lambda 2 --seed 5 -q --no-relax >"$T/t"
+	grep -q 'relax=false$' "$T/t"
+	[ "$(demdetect -a brute --shape 1e-9 -c "$T/t" 2>/dev/null)" -eq 0 ]
+	inside_domain "$T/t"
+	awk -v a="$(box_density "$T/a")" -v t="$(box_density "$T/t")" 'BEGIN { exit !(a > t + 0.03) }'
+}
+
+@test "dempack compress: a cylinder cut by two planes, from the scene with units; the options give the same spheres" {
+	printf 'pack:\n  method: compress\n  cylinder: [0 mm, 0 mm, 4 mm, 0 mm, 8 mm]\n  planes: [1, 0, 1, 2 mm, -1, 0, 0, -3 mm]\n  radius: {law: urd, min: 0.25 mm, lambda: 2}\n' >"$T/s.yaml"
+	dempack compress -s "$T/s.yaml" --seed 2 -q >"$T/a"
+	grep -q '^# cylinder 0 0 0.004 0 0.008$' "$T/a"
+	[ "$(grep -c '^# plane ' "$T/a")" -eq 2 ]
+	[ "$(rows "$T/a")" -gt 300 ]
+	inside_domain "$T/a"
+	[ "$(demdetect -a brute --shape 1e-9 -c "$T/a" 2>/dev/null)" -eq 0 ]
+	dempack compress --cylinder 0:0:4mm:0:8mm --planes 1:0:1:2mm:-1:0:0:-3mm --rmin 0.25mm --lambda 2 --seed 2 -q >"$T/b"
+	diff <(grep -v '^#' "$T/a") <(grep -v '^#' "$T/b")
+}
+
+@test "dempack compress: the same seed gives the same stream, another seed another" {
+	dempack compress --box 0:0:0:10:10:10 --rmin 0.5 --seed 8 -q >"$T/a"
+	dempack compress --box 0:0:0:10:10:10 --rmin 0.5 --seed 8 -q >"$T/b"
+	dempack compress --box 0:0:0:10:10:10 --rmin 0.5 --seed 9 -q >"$T/c"
+	diff <(grep -v '^# prog' "$T/a") <(grep -v '^# prog' "$T/b")
+	! diff -q <(grep -v '^#' "$T/a") <(grep -v '^#' "$T/c") >/dev/null
+}
+
+@test "dempack compress --vtk --stages: VTK points of the stream, a stage table ending at the stream's density" {
+	dempack compress --box 0:0:0:10:10:10 --rmin 0.5 --seed 1 -q --vtk "$T/p.vtk" --stages "$T/st" >"$T/p"
+	n=$(rows "$T/p")
+	grep -q "^POINTS $n double\$" "$T/p.vtk"
+	grep -q "^POINT_DATA $n\$" "$T/p.vtk"
+	grep -q '^# seconds	phase	batch	spheres	added	iterations	density$' "$T/st"
+	awk -F'\t' '!/^#/ { k++; ph[$2]++ } END { exit !(k >= 4 && ph["init"] == 1 && ph["global"] && ph["shake"] && ph["relax"]) }' "$T/st"
+	last=$(grep -v '^#' "$T/st" | tail -1 | cut -f 4)
+	[ "$last" -eq "$n" ]
+	ls "$T" | { ! grep -q tmp; }
+}
+
+@test "dempack compress: -v reports each stage on stderr; -q none" {
+	run --separate-stderr dempack compress --box 0:0:0:8:8:8 --rmin 0.5 --seed 1 -v -o "$T/p"
+	[ "$status" -eq 0 ]
+	[[ "$stderr" == *"dempack: compress: global batch 0: "*" spheres"* ]]
+	run --separate-stderr dempack compress --box 0:0:0:8:8:8 --rmin 0.5 --seed 1 -q -o "$T/p"
+	[ "${#stderr_lines[@]}" -eq 1 ]
+	[[ ${stderr_lines[0]} == "dempack: cost: "* ]]
+}
+
+@test "dempack compress: bad domains are refused naming the key, no output; other methods' options are usage errors" {
+	for a in "--box 0:0:0:1:-1:1" "--cylinder 0:0:0:0:1" "--cylinder 0:0:1:1:0" "--planes 0:0:0:1" "--planes 1:0:0"; do
+		run --separate-stderr dempack compress $a --rmin 0.1 -o "$T/x"
+		[ "$status" -eq 1 ] || [ "$status" -eq 2 ] || { echo "$a: $status $stderr"; false; }
+		[[ "$stderr" == *pack.* ]] || [[ "$stderr" == *--* ]]
+		[ ! -e "$T/x" ]
+	done
+	# typed, a usage error (2); from the scene, bad input (1)
+	run --separate-stderr dempack compress --box 0:0:0:1:1:1 --cylinder 0:0:1:0:1 -o "$T/x"
+	[ "$status" -eq 2 ]
+	[[ "$stderr" == *"pack.box"* ]]
+	[ ! -e "$T/x" ]
+	printf 'pack:\n  box: [0, 0, 0, 1, 1, 1]\n  cylinder: [0, 0, 1, 0, 1]\n' >"$T/s.yaml"
+	run --separate-stderr dempack compress -s "$T/s.yaml" -o "$T/x"
+	[ "$status" -eq 1 ]
+	[[ "$stderr" == *"s.yaml:"*"pack.box"* ]]
+	[ ! -e "$T/x" ]
+	# a domain narrower than a sphere
+	run --separate-stderr dempack compress --box 0:0:0:1:1:1 --rmin 1 -o "$T/x"
+	[ "$status" -eq 1 ]
+	[ ! -e "$T/x" ]
+	usage_error dempack compress --density 0.5
+	usage_error dempack random --no-relax
+	usage_error dempack front --stages "$T/s"
+	usage_error dempack shots --box 0:0:0:1:1:1
+}
