@@ -281,7 +281,19 @@ static int build_system(dem_form_t *f, dem_error_t *e)
 		}
 	}
 	memset(f->A->x, 0, nnz * sizeof(double));
+	/* Fill-reducing order: nested dissection (METIS).  The plate is a 2D
+	 * grid of node columns, where nested dissection is the right order
+	 * and CHOLMOD's default choice is not: on the strip with 2 mm
+	 * elements in plane it gave a factor of 5.5e8 nonzeros (88 s),
+	 * METIS 6.6e7 (3.6 s).  AMD when CHOLMOD has no METIS. */
+	f->cc.nmethods = 1;
+	f->cc.method[0].ordering = CHOLMOD_METIS;
 	f->L = cholmod_analyze(f->A, &f->cc);
+	if (!f->L && f->cc.status == CHOLMOD_NOT_INSTALLED) {
+		f->cc.status = CHOLMOD_OK;
+		f->cc.method[0].ordering = CHOLMOD_AMD;
+		f->L = cholmod_analyze(f->A, &f->cc);
+	}
 	if (!f->L)
 		return dem_error_set(e, DEM_EIO, "form: CHOLMOD analysis failed (status %d)",
 				     f->cc.status);
