@@ -679,3 +679,19 @@ box_density() {
 	usage_error dempack front --stages "$T/s"
 	usage_error dempack shots --box 0:0:0:1:1:1
 }
+
+@test "dempack front: 1M disks (URD [0.5, 1], open form) with and without a check limit: no overlap by D-cell, all inside" {
+	for k in 0 5; do
+		run --separate-stderr bash -c "dempack front --domain 0:0:1500:1500 --rmin 0.5 --lambda 2 --seed 3 --check-limit $k -b -o '$T/f$k' &&
+			demdetect -a dcell --shape 1e-9 -c '$T/f$k'"
+		echo "$stderr"
+		[ "$status" -eq 0 ]
+		[ "$output" = 0 ]
+		# close to a million disks, every one inside the square
+		n=$(sed -n 's/.*objects=\([0-9]*\).*/\1/p' <<< "$stderr" | head -1)
+		[ "$n" -gt 990000 ]
+	done
+	dempack front --domain 0:0:1500:1500 --rmin 0.5 --lambda 2 --seed 3 2>/dev/null |
+		awk '!/^#/ { if ($1 - $3 < -1e-9 || $2 - $3 < -1e-9 || $1 + $3 > 1500 + 1e-9 || $2 + $3 > 1500 + 1e-9) bad++; n++ }
+		     END { exit !(n > 990000 && !bad) }'
+}
