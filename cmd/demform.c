@@ -204,7 +204,7 @@ static int read_scene(dem_scene_t *s, int accuracy, struct settings *st, dem_err
 
 	st->nstep = 0;
 	for (int k = 1; k <= MAXSTEP; k++) {
-		char base[16], key[64];
+		char base[32], key[64];
 		snprintf(base, sizeof base, "form.step%d", k);
 		if (!dem_scene_has(s, base))
 			break;
