@@ -1,14 +1,19 @@
 /* demshot - the explicit finite element run of the peened block.
  *
- *   demshot [OPTION]...
+ *   demshot [OPTION]... [SHOTS]
  *
  * Builds the block of the scene (graded hex8 mesh, face conditions, the J2
- * material), loads it and integrates it in time with the central difference
- * method (lib/fe/explicit), and writes the state stream: the mesh, then the
- * displacements and element fields at the requested frames.  This first
- * form loads the block by pressure pulses on its top face (the `load`
- * section: the usual model of laser peening, and the test load of the
- * explicit stage); the shots of a shot stream come with the contact stage.
+ * material) and integrates it in time with the central difference method
+ * (lib/fe/explicit), and writes the state stream: the mesh, then the
+ * displacements and element fields.  Two loads:
+ *  - the shots of a shot stream (SHOTS, or standard input when the scene
+ *    has no `load` section): rigid spheres hitting the top face (lib/shot,
+ *    Ch. 3 and 7), pass by pass; a pass ends when the shots have left and
+ *    the block's kinetic energy has fallen below a fraction of its peak,
+ *    or at a maximum time; a frame is written at the end of each pass;
+ *  - pressure pulses on the top face (the `load` section: the usual model
+ *    of laser peening, and the test load of the explicit stage), frames
+ *    evenly spaced up to run.end.
  */
 #include <math.h>
 #include <stdio.h>
@@ -19,6 +24,8 @@
 #include <omp.h>
 #endif
 
+#include "contact/law.h"
+#include "contact/model.h"
 #include "core/cli.h"
 #include "core/cost.h"
 #include "fe/explicit.h"
@@ -26,11 +33,13 @@
 #include "io/scene.h"
 #include "io/state.h"
 #include "io/vtu.h"
+#include "shot/shotset.h"
 
 #define PROG "demshot"
 
 enum { OPT_END = DEM_OPT_PROGRAM, OPT_FRAMES, OPT_VTU, OPT_RULE, OPT_STRAIN,
-       OPT_DAMPING, OPT_DT_FACTOR, OPT_THREADS };
+       OPT_DAMPING, OPT_DT_FACTOR, OPT_THREADS, OPT_LAMBDA, OPT_FORCE, OPT_FORCES,
+       OPT_PASS_TIME, OPT_STEADY };
 
 static const dem_opt_t options[] = {
 	{"end", OPT_END, "T", "simulated time, with a unit if wanted (20us)"},
@@ -39,27 +48,36 @@ static const dem_opt_t options[] = {
 	{"strain", OPT_STRAIN, "KIND", "large (updated Lagrangian, Jaumann rate) or small"},
 	{"damping", OPT_DAMPING, "XI", "mass-proportional damping: ratio of critical in the lowest mode (Ch. 7.5: 0.05)"},
 	{"dt-factor", OPT_DT_FACTOR, "F", "time step over the stable element step, in (0, 1] (default 0.9)"},
+	{"lambda", OPT_LAMBDA, "L", "contact time step factor of Box 3.1 (default 0.2; above 0.3 a warning, above 0.5 refused)"},
+	{"force", OPT_FORCE, NULL, "run with a lambda above 0.5 all the same"},
+	{"forces", OPT_FORCES, "FILE", "write the contact force history of the shots to FILE (a history stream)"},
+	{"pass-time", OPT_PASS_TIME, "T", "longest time of a pass (default 200us)"},
+	{"steady", OPT_STEADY, "F", "a pass ends when the block's kinetic energy is below F times its peak (default 0.01)"},
 	{"vtu", OPT_VTU, "FILE", "also write the last frame to FILE for ParaView"},
 	{"threads", OPT_THREADS, "N", "OpenMP threads for the element loop (default: OMP_NUM_THREADS or all)"},
 	DEM_OPTS_COMMON,
 	{0}
 };
 
-static const char usage[] = "Usage: demshot [OPTION]...\n";
+static const char usage[] = "Usage: demshot [OPTION]... [SHOTS]\n";
 static const char purpose[] =
 	"Integrate the peened block of the scene in time (explicit finite elements)\n"
-	"under the scene's loads and write its state stream (mesh, then displacements\n"
-	"and element fields per frame; binary, gzip-compressed) to standard output.\n";
+	"under the shots of the shot stream SHOTS (standard input when the scene has\n"
+	"no load section) or the scene's pressure load, and write its state stream\n"
+	"(mesh, then displacements and element fields per pass or frame; binary,\n"
+	"gzip-compressed) to standard output.\n";
 static const char epilogue[] =
 	"Examples:\n"
+	"  dempack -s job.yaml shots | demshot -s job.yaml --forces f.txt -o job.state\n"
 	"  demshot -s pulse.yaml --frames 4 -o pulse.state\n"
 	"  demshot -s pulse.yaml --end 5us --rule full --vtu pulse.vtu | demprofile\n"
 	"\nSee demshot(1), dem-scene(5) and dem-streams(5).\n";
 
 struct cmdline {
 	dem_common_t com;
-	const char *vtu;
+	const char *vtu, *forces, *shots;
 	unsigned long threads;
+	int force;
 };
 
 static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
@@ -83,6 +101,11 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 		case OPT_DAMPING: dem_common_override(m, "run.damping", optarg, "--damping"); break;
 		case OPT_DT_FACTOR: dem_common_override(m, "run.dt_factor", optarg, "--dt-factor"); break;
 		case OPT_VTU: cl->vtu = optarg; break;
+		case OPT_LAMBDA: dem_common_override(m, "run.lambda", optarg, "--lambda"); break;
+		case OPT_FORCE: cl->force = 1; break;
+		case OPT_FORCES: cl->forces = optarg; break;
+		case OPT_PASS_TIME: dem_common_override(m, "run.pass_time", optarg, "--pass-time"); break;
+		case OPT_STEADY: dem_common_override(m, "run.steady", optarg, "--steady"); break;
 		case OPT_THREADS:
 			dem_cli_ulong(&c, "--threads", optarg, 1, 1024, &cl->threads);
 			break;
@@ -92,7 +115,9 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 	done = c.done;
 	if (done < 0) {
 		if (optind < argc)
-			dem_cli_error(&c, "unexpected argument '%s'", argv[optind]);
+			cl->shots = argv[optind++];
+		if (optind < argc)
+			dem_cli_error(&c, "unexpected argument '%s' (one shot stream at most)", argv[optind]);
 		if (dem_cli_finish(&c))
 			done = DEM_EUSAGE;
 	}
@@ -116,6 +141,13 @@ struct settings {
 	long frames;
 	int have_load;
 	struct pulse load;
+	/* the shots (shot, contact sections) */
+	int have_shots;
+	dem_contact_model_t cm;
+	dem_shotset_opts_t so;
+	double pass_time, steady;
+	int have_area;          /* the shot stream's impact area */
+	double area[4];
 };
 
 static void settings_free(struct settings *st)
@@ -182,10 +214,76 @@ static int read_load(dem_scene_t *s, struct settings *st, dem_error_t *e)
 	return DEM_OK;
 }
 
-static int read_scene(dem_scene_t *s, int accuracy, struct settings *st,
+/* The shot and contact sections, and the pass keys of run. */
+static int read_shots(dem_scene_t *s, int accuracy, struct settings *st, dem_error_t *e)
+{
+	static const char *const laws[] = {"power", "hertz", NULL};
+	static const char *const partials[] = {"area", "volume", NULL};
+	dem_contact_param_t p = {0};
+	double m, alpha, h = HUGE_VAL;
+	int law, partial;
+
+	for (int i = 0; i < st->mesh.nx; i++)
+		h = fmin(h, st->mesh.gx[i + 1] - st->mesh.gx[i]);
+	memset(&st->so, 0, sizeof st->so);
+	if (dem_scene_quantity(s, "shot.density", DEM_DIM_DENSITY, 7800, DEM_SCENE_GT0,
+			       HUGE_VAL, &st->so.rho, e) ||
+	    dem_scene_quantity(s, "shot.gap", DEM_DIM_LENGTH, h / 10, 0, HUGE_VAL,
+			       &st->so.gap, e) ||
+	    dem_scene_quantity(s, "shot.buffer", DEM_DIM_LENGTH, h, DEM_SCENE_GT0,
+			       HUGE_VAL, &st->so.buffer, e) ||
+	    dem_scene_choice(s, "contact.law", laws, 0, &law, e) ||
+	    dem_scene_quantity(s, "contact.m", DEM_DIM_NONE, DEM_LAW_M_HERTZ, 1, 4, &m, e) ||
+	    dem_scene_quantity(s, "contact.alpha", DEM_DIM_NONE, 2.5, DEM_SCENE_GT0,
+			       HUGE_VAL, &alpha, e) ||
+	    dem_scene_choice(s, "contact.partial", partials, DEM_PARTIAL_AREA, &partial, e) ||
+	    dem_scene_quantity(s, "run.lambda", DEM_DIM_NONE,
+			       accuracy == DEM_ACCURACY_FINE ? 0.1 : DEM_DT_LAMBDA_DEFAULT,
+			       -HUGE_VAL, HUGE_VAL, &st->so.lambda, e) ||
+	    dem_scene_quantity(s, "run.pass_time", DEM_DIM_TIME, 200e-6, DEM_SCENE_GT0,
+			       HUGE_VAL, &st->pass_time, e) ||
+	    dem_scene_quantity(s, "run.steady", DEM_DIM_NONE, 0.01, DEM_SCENE_GT0, 1,
+			       &st->steady, e))
+		return e->code;
+	if (law == 1) {
+		if (dem_law_hertz(&p.law, st->mat.E, st->mat.nu, e))
+			return e->code;
+	} else if (dem_law_init(&p.law, alpha, st->mat.E, m, e)) {
+		return e->code;
+	}
+	p.partial = partial;
+	/* the effects the scene gives (DESIGN.md) */
+	if (dem_scene_has(s, "contact.friction")) {
+		p.friction = 1;
+		if (dem_scene_quantity(s, "contact.friction", DEM_DIM_NONE, 0, 0, HUGE_VAL,
+				       &p.mu, e) ||
+		    dem_scene_quantity(s, "contact.kt_ratio", DEM_DIM_NONE, DEM_CONTACT_KT_RATIO,
+				       DEM_SCENE_GT0, HUGE_VAL, &p.kt_ratio, e))
+			return e->code;
+	}
+	if (dem_scene_has(s, "contact.damping") && dem_scene_has(s, "contact.unload"))
+		return dem_scene_error(s, "contact.unload", e, "give one energy loss: "
+				       "damping (viscous) or unload (hysteresis)");
+	if (dem_scene_has(s, "contact.damping")) {
+		p.damping = DEM_DAMP_VISCOUS;
+		if (dem_scene_quantity(s, "contact.damping", DEM_DIM_NONE, 0, 0, 0.999999,
+				       &p.xi, e))
+			return e->code;
+	}
+	if (dem_scene_has(s, "contact.unload")) {
+		p.damping = DEM_DAMP_HYSTERESIS;
+		if (dem_scene_quantity(s, "contact.unload", DEM_DIM_NONE, 1, 1, HUGE_VAL,
+				       &p.unload, e))
+			return e->code;
+	}
+	return dem_contact_model_init(&st->cm, &p, e);
+}
+
+static int read_scene(dem_scene_t *s, int accuracy, int shots, struct settings *st,
 		      dem_error_t *e)
 {
-	static const char *const sections[] = {"material", "block", "run", "load", NULL};
+	static const char *const sections[] = {"material", "block", "run", "load", "shot",
+					       "contact", NULL};
 	static const char *const rules[] = {"one_point", "full", NULL};
 	static const char *const strains[] = {"small", "large", NULL};
 	int rule, large;
@@ -212,7 +310,11 @@ static int read_scene(dem_scene_t *s, int accuracy, struct settings *st,
 		return e->code;
 	st->fe.rule = rule ? DEM_FE_FULL : DEM_FE_1PT;
 	st->fe.large = large;
-	if (isnan(st->end))
+	if (read_load(s, st, e))
+		return e->code;
+	/* a shot stream: the argument, or standard input without a load */
+	st->have_shots = shots || !st->have_load;
+	if (isnan(st->end) && !st->have_shots)
 		return dem_scene_error(s, "run.end", e, "missing: how long to "
 				       "run (e.g. 20 us)");
 	if (isnan(st->xi))
@@ -220,7 +322,7 @@ static int read_scene(dem_scene_t *s, int accuracy, struct settings *st,
 	else
 		st->fe.damping = dem_fe_damping_alpha(&st->mat, st->xi,
 						      -st->mesh.gz[0]);
-	if (read_load(s, st, e))
+	if (st->have_shots && read_shots(s, accuracy, st, e))
 		return e->code;
 	return dem_scene_check(s, sections, e);
 }
@@ -271,7 +373,11 @@ static void log_effects(const struct settings *st)
 		: "one-point integration with hourglass control");
 	if (st->xi >= 0)
 		fprintf(stderr, ", damping %g of critical", st->xi);
-	fprintf(stderr, "%s\n", st->have_load ? ", pressure load" : "");
+	fprintf(stderr, "%s", st->have_load ? ", pressure load" : "");
+	if (st->have_shots)
+		fprintf(stderr, ", shots: contact %s, sphere/sphere, lambda %g",
+			st->cm.effects, st->so.lambda);
+	fputc('\n', stderr);
 }
 
 /* Field buffers for a frame. */
@@ -309,6 +415,10 @@ static int open_state(const struct cmdline *cl, const struct settings *st,
 	double ay = st->have_load ? st->load.area[1] : m->gy[m->ny] - m->gy[0];
 	double cx = st->have_load ? st->load.centre[0] : 0;
 	double cy = st->have_load ? st->load.centre[1] : 0;
+	if (st->have_area) {
+		ax = st->area[2] - st->area[0], ay = st->area[3] - st->area[1];
+		cx = (st->area[0] + st->area[2]) / 2, cy = (st->area[1] + st->area[3]) / 2;
+	}
 	int rc;
 
 	/* the metadata lines of the header (kind and columns are the state
@@ -376,6 +486,193 @@ static int run(dem_fe_t *fe, const struct settings *st, int quiet,
 	return DEM_OK;
 }
 
+/* ---- the peening run ------------------------------------------------------ */
+
+/* The shot stream, read a pass at a time (one row of look-ahead). */
+struct shotin {
+	dem_reader_t *r;
+	int col[8];             /* pass t x y r vx vy vz */
+	double f[8];            /* unit factors */
+	double row[DEM_STREAM_MAXCOL];
+	int have;               /* row holds the next pass's first row */
+	dem_shot_t *sh;
+	size_t n, cap;
+	long pass;              /* last pass read, -1 at first */
+};
+
+static int shotin_open(struct shotin *in, const char *path, dem_error_t *e)
+{
+	static const char *const names[8] = {"pass", "t", "x", "y", "r", "vx", "vy", "vz"};
+	const dem_dim_t dims[8] = {DEM_DIM_NONE, DEM_DIM_TIME, DEM_DIM_LENGTH, DEM_DIM_LENGTH,
+				   DEM_DIM_LENGTH, DEM_DIM_VELOCITY, DEM_DIM_VELOCITY,
+				   DEM_DIM_VELOCITY};
+	int rc;
+
+	memset(in, 0, sizeof *in);
+	in->pass = -1;
+	if ((rc = dem_reader_open(&in->r, path, e)))
+		return rc;
+	const dem_header_t *h = dem_reader_header(in->r);
+	if (strcmp(h->kind, "shots"))
+		return dem_error_set(e, DEM_EINPUT, "%s: a %s stream, expected a shot stream "
+				     "(dempack shots)", dem_reader_name(in->r), h->kind);
+	for (int i = 0; i < 8; i++) {
+		in->col[i] = dem_header_col(h, names[i]);
+		if (in->col[i] < 0)
+			return dem_error_set(e, DEM_EINPUT, "%s: no column '%s' in the shot "
+					     "stream", dem_reader_name(in->r), names[i]);
+		if ((rc = dem_header_col_factor(h, in->col[i], dims[i], dem_reader_name(in->r),
+						&in->f[i], e)))
+			return rc;
+	}
+	return DEM_OK;
+}
+
+/* Read the next pass: 1 with shots in in->sh[0..n), 0 at the end. */
+static int shotin_pass(struct shotin *in, dem_error_t *e)
+{
+	in->n = 0;
+	for (;;) {
+		if (!in->have) {
+			int k = dem_reader_next(in->r, in->row, e);
+			if (k < 0)
+				return -1;
+			if (k == 0)
+				return in->n > 0;
+			in->have = 1;
+		}
+		double v[8];
+		for (int i = 0; i < 8; i++)
+			v[i] = in->row[in->col[i]] * in->f[i];
+		long pass = (long)v[0];
+		if (in->n > 0 && pass != (long)in->sh[0].pass)
+			return 1;       /* the row starts the next pass */
+		if (pass < in->pass + (in->n == 0))
+			return dem_error_set(e, DEM_EINPUT, "%s: pass %ld after pass %ld: the "
+					     "passes must increase", dem_reader_where(in->r),
+					     pass, in->pass), -1;
+		if (in->n == in->cap) {
+			size_t c = in->cap ? 2 * in->cap : 64;
+			dem_shot_t *q = realloc(in->sh, c * sizeof *q);
+			if (!q)
+				return dem_error_nomem(e, "shots"), -1;
+			in->sh = q, in->cap = c;
+		}
+		dem_shot_t *q = &in->sh[in->n++];
+		q->pass = (unsigned long)pass;
+		q->t = v[1], q->x[0] = v[2], q->x[1] = v[3], q->r = v[4];
+		q->v[0] = v[5], q->v[1] = v[6], q->v[2] = v[7];
+		if (!(q->r > 0) || !(q->v[2] < 0) || !(q->t >= 0))
+			return dem_error_set(e, DEM_EINPUT, "%s: a shot needs r > 0, vz < 0 "
+					     "(towards the block) and t >= 0", dem_reader_where(in->r)), -1;
+		in->pass = pass;
+		in->have = 0;
+	}
+}
+
+static void shotin_close(struct shotin *in)
+{
+	dem_reader_close(in->r);
+	free(in->sh);
+}
+
+/* The force history: per step, one row per shot in contact. */
+static int open_forces(const char *path, int argc, char **args, dem_writer_t **w,
+		       dem_error_t *e)
+{
+	static const char *const cols[] = {"t", "fn", "ft", "fx", "fy", "fz"};
+	static const char *const units[] = {"s", "N", "N", "N", "N", "N"};
+	dem_header_t h;
+	int rc;
+
+	dem_header_init(&h, "history", 1, 3);
+	dem_header_add_col(&h, "pass", DEM_U32, "-");
+	dem_header_add_col(&h, "shot", DEM_U32, "-");
+	for (int i = 0; i < 6; i++)
+		dem_header_add_col(&h, cols[i], DEM_F64, units[i]);
+	dem_header_add_provenance(&h, PROG, argc, args, 0, 0);
+	rc = dem_writer_open(w, path, &h, 0, e);
+	dem_header_free(&h);
+	return rc;
+}
+
+/* One pass: place the shots, step until steady or the pass time, write
+ * the frame. */
+static int run_pass(dem_fe_t *fe, dem_shotset_t *S, const struct settings *st,
+		    const struct shotin *in, int quiet, dem_state_writer_t *w,
+		    dem_writer_t *fw, struct fields *f, double *next_report,
+		    dem_error_t *e)
+{
+	double t0 = dem_fe_time(fe), peak = 0;
+	unsigned pass = (unsigned)in->sh[0].pass;
+	int rc;
+
+	if ((rc = dem_shotset_begin(S, in->n, in->sh, dem_fe_coords(fe), e)))
+		return rc;
+	for (;;) {
+		double dt, t = dem_fe_time(fe);
+		if ((rc = dem_shotset_prepare(S, dem_fe_coords(fe), dem_fe_dt(fe), &dt, e)) ||
+		    (rc = dem_fe_step(fe, dt, e)))
+			return rc;
+		if (fw) {
+			for (size_t i = 0; i < dem_shotset_count(S); i++) {
+				const dem_shot_body_t *b = dem_shotset_body(S, i);
+				if (!b->contacts)
+					continue;
+				double row[8] = {pass, (double)i, t - t0, b->Fn, b->Ft,
+						 b->F[0], b->F[1], b->F[2]};
+				if ((rc = dem_writer_row(fw, row, e)))
+					return rc;
+			}
+		}
+		dem_fe_energy_t en;
+		dem_fe_energy(fe, &en);
+		peak = fmax(peak, en.kinetic);
+		if (dem_shotset_done(S) && en.kinetic <= st->steady * peak)
+			break;
+		if (dem_fe_time(fe) - t0 >= st->pass_time) {
+			if (!quiet)
+				fprintf(stderr, "%s: pass %u: not steady after %g s (kinetic "
+					"energy %.3g of its peak%s); ending it\n", PROG, pass,
+					st->pass_time, peak > 0 ? en.kinetic / peak : 0,
+					dem_shotset_done(S) ? "" : ", shots still in contact");
+			break;
+		}
+		if (!quiet && dem_wall() > *next_report) {
+			fprintf(stderr, "%s: pass %u: t = %.4g s, step %ld, dt %.3g s, "
+				"kinetic %.4g J (%.2g of peak)\n", PROG, pass,
+				dem_fe_time(fe) - t0, dem_fe_steps(fe), dt, en.kinetic,
+				peak > 0 ? en.kinetic / peak : 0);
+			*next_report = dem_wall() + 2;
+		}
+	}
+	fields_get(fe, f);
+	return dem_state_write_frame(w, pass, dem_fe_time(fe), f->u, f->sig, f->eps, f->ep, e);
+}
+
+static int run_shots(dem_fe_t *fe, dem_shotset_t *S, const struct settings *st,
+		     struct shotin *in, int quiet, dem_state_writer_t *w, dem_writer_t *fw,
+		     struct fields *f, long *passes, dem_error_t *e)
+{
+	double next_report = dem_wall() + 2;
+	int k, rc;
+
+	*passes = 0;
+	while ((k = shotin_pass(in, e)) > 0) {
+		if ((rc = run_pass(fe, S, st, in, quiet, w, fw, f, &next_report, e)))
+			return rc;
+		++*passes;
+		if (!quiet)
+			fprintf(stderr, "%s: pass %lu done at t = %.4g s\n", PROG,
+				in->sh[0].pass, dem_fe_time(fe));
+	}
+	if (k < 0)
+		return e->code;
+	if (*passes == 0)
+		return dem_error_set(e, DEM_EINPUT, "%s: no shots", dem_reader_name(in->r));
+	return DEM_OK;
+}
+
 int main(int argc, char **argv)
 {
 	struct cmdline cl;
@@ -385,6 +682,11 @@ int main(int argc, char **argv)
 	dem_scene_t *scene = NULL;
 	dem_fe_t *fe = NULL;
 	dem_state_writer_t *w = NULL;
+	dem_writer_t *fw = NULL;
+	dem_shotset_t *S = NULL;
+	struct shotin in = {0};
+	int have_in = 0;
+	long passes = 0;
 	dem_cost_t cost;
 	int rc;
 
@@ -405,15 +707,48 @@ int main(int argc, char **argv)
 	double t = dem_wall();
 	if ((rc = dem_scene_load(&scene, cl.com.scene, &e)) ||
 	    (rc = dem_scene_override_all(scene, cl.com.ov, cl.com.nov, &e)) ||
-	    (rc = read_scene(scene, cl.com.accuracy, &st, &e)))
+	    (rc = read_scene(scene, cl.com.accuracy, cl.shots != NULL, &st, &e)))
 		goto fail;
 	if (cl.com.dump) {
 		dem_scene_dump(scene, stdout);
 		goto done;
 	}
+	if (!st.have_shots && (cl.forces)) {
+		rc = dem_error_set(&e, DEM_EUSAGE, "--forces needs shots (a shot stream)");
+		goto fail;
+	}
+	if (st.have_shots) {
+		/* Box 3.1: lambda 0.1-0.3 (Eq. 3.84), refused above 0.5 */
+		char msg[256];
+		switch (dem_dt_lambda_check(st.so.lambda, cl.force, msg, sizeof msg)) {
+		case DEM_LAMBDA_OK:
+			break;
+		case DEM_LAMBDA_WARN:
+		case DEM_LAMBDA_FORCED:
+			fprintf(stderr, "%s: warning: %s\n", PROG, msg);
+			break;
+		case DEM_LAMBDA_REFUSED:
+			rc = dem_error_set(&e, DEM_EUSAGE, "%s", msg);
+			goto fail;
+		default:
+			rc = dem_error_set(&e, DEM_EINPUT, "%s", msg);
+			goto fail;
+		}
+		have_in = 1;
+		if ((rc = shotin_open(&in, cl.shots && strcmp(cl.shots, "-") ? cl.shots : NULL, &e)))
+			goto fail;
+		const char *a = dem_header_get(dem_reader_header(in.r), "area");
+		st.have_area = a && sscanf(a, "%lf %lf %lf %lf", &st.area[0], &st.area[1],
+					   &st.area[2], &st.area[3]) == 4;
+	}
 	if ((rc = dem_fe_create(&fe, &st.mesh, &st.mat, &st.fe, &e)) ||
 	    (st.have_load && (rc = apply_load(fe, &st, &e))))
 		goto fail;
+	if (st.have_shots) {
+		if ((rc = dem_shotset_create(&S, &st.mesh, dem_fe_mass(fe), &st.cm, &st.so, &e)))
+			goto fail;
+		dem_fe_set_load(fe, dem_shotset_hook, S);
+	}
 	if (fields_alloc(&f, &st.mesh)) {
 		rc = dem_error_nomem(&e, "fields");
 		goto fail;
@@ -425,14 +760,24 @@ int main(int argc, char **argv)
 			st.mesh.ny, st.mesh.nz, st.mesh.nn, dem_fe_dt(fe));
 		log_effects(&st);
 	}
-	if ((rc = open_state(&cl, &st, argc, args, &w, &e)))
+	if ((rc = open_state(&cl, &st, argc, args, &w, &e)) ||
+	    (cl.forces && (rc = open_forces(cl.forces, argc, args, &fw, &e))))
 		goto fail;
 	t = dem_wall();
-	if ((rc = run(fe, &st, cl.com.quiet, w, &f, &cost, &e)))
+	if (st.have_shots)
+		rc = run_shots(fe, S, &st, &in, cl.com.quiet, w, fw, &f, &passes, &e);
+	else
+		rc = run(fe, &st, cl.com.quiet, w, &f, &cost, &e);
+	if (rc)
 		goto fail;
-	dem_cost_time(&cost, "run", dem_wall() - t);
+	double run_s = dem_wall() - t;
+	dem_cost_time(&cost, "run", run_s);
 	rc = dem_state_writer_close(w, &e);
 	w = NULL;
+	if (!rc && fw) {
+		rc = dem_writer_close(fw, &e);
+		fw = NULL;
+	}
 	if (rc)
 		goto fail;
 	if (cl.vtu && (rc = dem_vtu_write(cl.vtu, &st.mesh,
@@ -458,7 +803,29 @@ int main(int argc, char **argv)
 	dem_cost_count(&cost, "ns_per_elem_cycle",
 		       fs.elem_cycles > 0 ? 1e9 * (fs.elem_s + fs.node_s) / fs.elem_cycles : 0);
 	dem_cost_count(&cost, "energy_error", en.scale > 0 ? fabs(en.balance) / en.scale : 0);
+	if (S) {
+		dem_shotset_stats_t ss;
+		dem_shotset_stats(S, &ss);
+		/* the share of the time per effect (DESIGN.md "Effects") */
+		if (!cl.com.quiet && run_s > 0)
+			fprintf(stderr, "%s: time: elements %.0f%%, contact (%s) %.0f%%, "
+				"candidates %.0f%%, shot motion %.0f%%, other %.0f%%\n", PROG,
+				100 * (fs.elem_s + fs.node_s) / run_s, st.cm.effects,
+				100 * ss.contact_s / run_s, 100 * ss.detect_s / run_s,
+				100 * ss.integrate_s / run_s, 100 * (run_s - fs.elem_s - fs.node_s
+				- ss.contact_s - ss.detect_s - ss.integrate_s) / run_s);
+		dem_cost_time(&cost, "contact", ss.contact_s);
+		dem_cost_time(&cost, "detect", ss.detect_s);
+		dem_cost_count(&cost, "passes", (double)passes);
+		dem_cost_count(&cost, "rebuilds", (double)ss.rebuilds);
+		dem_cost_count(&cost, "contacts", ss.contacts);
+		dem_cost_count(&cost, "ns_per_contact",
+			       ss.contacts > 0 ? 1e9 * ss.contact_s / ss.contacts : 0);
+	}
 done:
+	if (have_in)
+		shotin_close(&in);
+	dem_shotset_free(S);
 	fields_free(&f);
 	dem_fe_free(fe);
 	settings_free(&st);
@@ -475,6 +842,10 @@ fail:
 	if (rc == DEM_EUSAGE)
 		fprintf(stderr, "Try '%s --help' for more information.\n", PROG);
 	dem_state_writer_abort(w);
+	dem_writer_abort(fw);
+	if (have_in)
+		shotin_close(&in);
+	dem_shotset_free(S);
 	fields_free(&f);
 	dem_fe_free(fe);
 	settings_free(&st);

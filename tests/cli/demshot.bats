@@ -144,7 +144,8 @@ YAML
 @test "demshot: usage errors exit 2" {
 	usage_error demshot -s "$T/pulse.yaml" --rule twopoint
 	usage_error demshot -s "$T/pulse.yaml" --threads 0
-	usage_error demshot -s "$T/pulse.yaml" stray
+	usage_error demshot -s "$T/pulse.yaml" shots1 shots2
+	usage_error demshot -s "$T/pulse.yaml" --lambda 0.6 "$T/none"
 	usage_error demshot --bogus
 }
 
@@ -155,4 +156,95 @@ YAML
 	run --separate-stderr bash -c "$vg demshot -s '$T/col.yaml' --end 1us --threads 1 -q | $vg demprofile; echo \"\${PIPESTATUS[*]}\""
 	echo "$stderr"
 	[ "${lines[-1]}" = "0 0" ]
+}
+
+# ---- the peening run (shots) ----------------------------------------------
+# The Ch. 7.5 single shot (0.5 mm radius, 19 m/s, aluminium E 68 GPa, yield
+# 157 MPa, hardening 120 MPa; thesis-data.yaml) on a coarse block.
+
+shot_scene() {
+	cat > "$T/shot.yaml" <<'YAML'
+material:
+  E: 68 GPa
+  nu: 0.33
+  rho: 2700 kg/m^3
+  yield: 157 MPa
+  hardening: 120 MPa
+block:
+  size: [2 mm, 2 mm, 1 mm]
+  element: 0.1 mm
+  fine: [1 mm, 1 mm]
+  fine_depth: 0.4 mm
+  ratio: 1.3
+shot:
+  density: 7800 kg/m^3
+contact:
+  alpha: 2
+run:
+  damping: 0.05
+  pass_time: 20 us
+YAML
+	dempack shots --grid 1 --passes 2 --area 0.2mm:0.2mm --speed 19 --shot-radius 0.5mm --seed 1 > "$T/s2.txt"
+	dempack shots --grid 2 --passes 1 --area 1mm:1mm --speed 19 --angle 60deg --shot-radius 0.25mm --seed 1 > "$T/s4.txt"
+}
+
+@test "demshot: shots from a stream, a frame per pass, the force history" {
+	shot_scene
+	run --separate-stderr demshot -s "$T/shot.yaml" --forces "$T/f.txt" -o "$T/s.state" "$T/s2.txt"
+	echo "$stderr"
+	[ "$status" -eq 0 ]
+	grep -q "shots: contact law m=1.5, partial area, sphere/sphere, lambda 0.2" <<< "$stderr"
+	grep -q "time: elements .*%, contact (law m=1.5, partial area) .*%" <<< "$stderr"
+	[[ ${stderr_lines[-1]} =~ ^demshot:\ cost:\ .*\ passes=2\ .*contacts=[1-9] ]]
+	# the frames carry the stream's passes 0 and 1, and its impact area
+	[ "$(demprofile --pass all "$T/s.state" | grep -v '^#' | cut -d' ' -f1 | sort -u | tr '\n' ' ')" = "0 1 " ]
+	gzip -dc "$T/s.state" | grep -a -m1 '^# area' | grep -q -- '-0.0001 -0.0001 0.0001 0.0001'
+	# the history: rows while in contact, the normal force pushing the shot up
+	head -1 "$T/f.txt" | grep -qx '# dem history 1'
+	grep -q '^# columns pass:u32:- shot:u32:- t:f64:s fn:f64:N ft:f64:N fx:f64:N fy:f64:N fz:f64:N' "$T/f.txt"
+	tail -1 "$T/f.txt" | grep -q '^# end [1-9]'
+	grep -v '^#' "$T/f.txt" | awk '$4 < 0 || $8 < 0 { bad++ } $8 > m { m = $8 } END { exit !(bad == 0 && m > 10 && m < 1e4) }'
+}
+
+@test "demshot: friction absent and friction 0 give the same block; the log names the effects" {
+	shot_scene
+	sed 's/  alpha: 2/  alpha: 2\n  friction: 0/' "$T/shot.yaml" > "$T/mu0.yaml"
+	sed 's/  alpha: 2/  alpha: 2\n  friction: 0.3/' "$T/shot.yaml" > "$T/mu3.yaml"
+	run --separate-stderr demshot -s "$T/shot.yaml" -o "$T/a.state" "$T/s4.txt"
+	[ "$status" -eq 0 ]
+	run --separate-stderr demshot -s "$T/mu0.yaml" -o "$T/b.state" "$T/s4.txt"
+	[ "$status" -eq 0 ]
+	grep -q "contact law m=1.5, friction mu=0, partial area" <<< "$stderr"
+	run --separate-stderr demshot -s "$T/mu3.yaml" -o "$T/c.state" "$T/s4.txt"
+	[ "$status" -eq 0 ]
+	a=$(demprofile "$T/a.state" | grep -v '^#')
+	b=$(demprofile "$T/b.state" | grep -v '^#')
+	c=$(demprofile "$T/c.state" | grep -v '^#')
+	[ "$a" = "$b" ]
+	[ "$a" != "$c" ]
+}
+
+@test "demshot: lambda above 0.3 warns, above 0.5 is refused unless forced" {
+	shot_scene
+	run --separate-stderr demshot -s "$T/shot.yaml" --lambda 0.4 -q -o "$T/w.state" "$T/s2.txt"
+	[ "$status" -eq 0 ]
+	grep -q "warning" <<< "$stderr"
+	run --separate-stderr demshot -s "$T/shot.yaml" --lambda 0.6 -o "$T/r.state" "$T/s2.txt"
+	[ "$status" -eq 2 ]
+	[ ! -e "$T/r.state" ]
+	run --separate-stderr demshot -s "$T/shot.yaml" --lambda 0.6 --force -q -o "$T/r.state" --pass-time 2us "$T/s2.txt"
+	[ "$status" -eq 0 ]
+}
+
+@test "demshot: a stream that is not a shot stream is bad input, with no output" {
+	shot_scene
+	dempack random -n 3 --seed 1 > "$T/p.txt" 2>/dev/null || skip "dempack random needs a scene"
+	run --separate-stderr demshot -s "$T/shot.yaml" -o "$T/x.state" "$T/p.txt"
+	[ "$status" -eq 1 ]
+	grep -q "expected a shot stream" <<< "$stderr"
+	[ ! -e "$T/x.state" ]
+	head -c 300 "$T/s2.txt" > "$T/cut.txt"
+	run --separate-stderr demshot -s "$T/shot.yaml" -o "$T/x.state" "$T/cut.txt"
+	[ "$status" -eq 1 ]
+	[ ! -e "$T/x.state" ]
 }
