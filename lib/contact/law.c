@@ -60,12 +60,12 @@ double dem_law_kn(const dem_law_t *law, double R)
 {
 	double m = law->m;
 	if (m == 1.0)
-		return law->coef;
+		return law->coef * R;
 	if (m == 1.5)
 		return law->coef * sqrt(R);
 	if (m == 2.0)
-		return law->coef * R;
-	return law->coef * pow(R, m - 1);
+		return law->coef;
+	return law->coef * pow(R, 2 - m);
 }
 
 double dem_law_force(const dem_law_t *law, double kn, double delta)

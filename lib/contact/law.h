@@ -3,12 +3,22 @@
  *
  * Every normal law is the power law of Eq. 3.45,
  *
- *     F_n = k_n delta^m,   k_n = coef R^(m-1),   coef = alpha E,
+ *     F_n = k_n delta^m,   k_n = coef R^(2-m),   coef = alpha E,
  *
  * with the dimensionless penalty alpha: m = 1 linear (Hooke), 1.5 Hertz,
  * 2 the 3D Winkler model, any m in [1, 4] a power law.  The classic Hertz
  * law (Eqs. 3.28-3.29) is the same form with coef = 4/3 E*, m = 3/2, so the
- * DE law can be checked against the Hertz solution.  R is the sphere radius
+ * DE law can be checked against the Hertz solution.
+ *
+ * The radius exponent.  Eq. 3.45 writes R^(m-1), which is a force only for
+ * m = 3/2 in 3D (E R^(m-1) delta^m has the units of Pa m^(2m-1)); for m = 1
+ * it is a force per unit length (the thesis's plane-strain Ch. 7.4) and
+ * for m = 2 a force times a length, so that with a dimensionless alpha the
+ * law would change with the unit of length (in SI the linear law came out
+ * 1000 times stiffer than the thesis's in mm).  For spheres we use R^(2-m),
+ * the exponent that makes alpha dimensionless for every m: the same as
+ * Eq. 3.45 for the Hertz law, k_n = alpha E R for the linear law (the
+ * stiffness of the 3D Hooke law of the DEM literature), alpha E for m = 2.  R is the sphere radius
  * for sphere/facet contact and the relative radius R1 R2 / (R1 + R2) for
  * sphere/sphere contact.  A driver computes k_n once per sphere
  * (dem_law_kn) and keeps it.
@@ -34,10 +44,10 @@
 
 typedef struct dem_law {
 	double m;     /* exponent of the overlap, in [1, 4] */
-	double coef;  /* k_n = coef R^(m-1): alpha E (Eq. 3.45) or 4/3 E* (Eq. 3.28) */
+	double coef;  /* k_n = coef R^(2-m): alpha E (Eq. 3.45) or 4/3 E* (Eq. 3.28) */
 } dem_law_t;
 
-/* Eq. 3.45: F = alpha E R^(m-1) delta^m.  alpha > 0 dimensionless, E > 0
+/* Eq. 3.45 in 3D: F = alpha E R^(2-m) delta^m (see above).  alpha > 0 dimensionless, E > 0
  * (Pa), 1 <= m <= 4.  DEM_EINPUT with a message when out of range. */
 int dem_law_init(dem_law_t *law, double alpha, double E, double m, dem_error_t *e);
 
@@ -52,7 +62,7 @@ double dem_law_estar(double E1, double nu1, double E2, double nu2);
 /* Relative radius R1 R2 / (R1 + R2) of two spheres (Eq. 3.28). */
 double dem_law_reff(double R1, double R2);
 
-/* k_n = coef R^(m-1) (no pow() for m = 1, 1.5, 2). */
+/* k_n = coef R^(2-m) (no pow() for m = 1, 1.5, 2). */
 double dem_law_kn(const dem_law_t *law, double R);
 
 /* F_n = k_n delta^m (0 for delta <= 0) and the tangent stiffness

@@ -221,7 +221,14 @@ static void test_alpha_range(void **state)
 			assert_true(r.steps > 0);
 			assert_true(ratio <= 1 / sqrt(1 - lambda * lambda));
 			/* the same as the rigid wall of Box 3.1: partial contacts add no error */
-			assert_true(fabs(ratio - dem_dt_wall_test(ms[j], 1, 1, 1, lambda, NULL, NULL)) < 1e-3);
+			/* the same as the rigid wall of Box 3.1: partial contacts add
+			 * no error.  For the Hertz law the exit ratio is a smooth
+			 * function of lambda; for the linear law it depends on the
+			 * phase of the step at first contact (Fig. 3.15b: exact points
+			 * between overshoots), which the wall test fixes at u(0) = 0 and
+			 * a free flight does not, so there only the bound above holds */
+			if (ms[j] != 1)
+				assert_true(fabs(ratio - dem_dt_wall_test(ms[j], 1, 1, 1, lambda, NULL, NULL)) < 1e-3);
 			assert_true(r.dmax <= umax * (1 + lambda * lambda));
 			assert_true(r.dmax < 0.05 * R_SHOT);
 			/* a flat surface pushes straight back */

@@ -38,10 +38,23 @@ static void test_law_forms(void **state)
 	assert_true(fabs(dem_law_force(&l, 10, 4.0) - 80) < 1e-12);
 	assert_true(fabs(dem_law_stiffness(&l, 10, 4.0) - 30) < 1e-12);
 	assert_true(dem_law_force(&l, 10, -1) == 0);
+	/* R^(2-m): a force for every m (N = Pa m^(2-m) m^m) */
 	assert_int_equal(dem_law_init(&l, 1, 1, 2, &e), DEM_OK);
+	assert_true(fabs(dem_law_kn(&l, 3) - 1) < 1e-15);
+	assert_int_equal(dem_law_init(&l, 1, 1, 1, &e), DEM_OK);
 	assert_true(fabs(dem_law_kn(&l, 3) - 3) < 1e-15);
 	assert_int_equal(dem_law_init(&l, 1, 1, 2.5, &e), DEM_OK);
-	assert_true(fabs(dem_law_kn(&l, 4) - 8) < 1e-12);
+	assert_true(fabs(dem_law_kn(&l, 4) - 0.5) < 1e-12);
+	/* the force does not depend on the unit of length: R and delta in
+	 * mm with E in N/mm^2 give the same newtons as in SI */
+	for (double m = 1; m <= 2.5; m += 0.5) {
+		dem_law_t si, mm;
+		assert_int_equal(dem_law_init(&si, 2.5, 68e9, m, &e), DEM_OK);
+		assert_int_equal(dem_law_init(&mm, 2.5, 68e3, m, &e), DEM_OK);
+		double fsi = dem_law_force(&si, dem_law_kn(&si, 0.5e-3), 1e-6);
+		double fmm = dem_law_force(&mm, dem_law_kn(&mm, 0.5), 1e-3);
+		assert_true(fabs(fsi - fmm) < 1e-12 * fsi);
+	}
 	assert_true(fabs(dem_law_force(&l, 1, 4) - 32) < 1e-12);
 	/* Hertz (Eq. 3.29) is Eq. 3.45 with alpha = 4 / (3 (1 - nu^2)) */
 	assert_int_equal(dem_law_hertz(&h, 68e9, 0.33, &e), DEM_OK);
