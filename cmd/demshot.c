@@ -15,10 +15,15 @@
  *    of laser peening, and the test load of the explicit stage), frames
  *    evenly spaced up to run.end.
  */
+#include <errno.h>
 #include <math.h>
+#include <signal.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
+#include <zlib.h>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -39,7 +44,7 @@
 
 enum { OPT_END = DEM_OPT_PROGRAM, OPT_FRAMES, OPT_VTU, OPT_RULE, OPT_STRAIN,
        OPT_DAMPING, OPT_DT_FACTOR, OPT_THREADS, OPT_LAMBDA, OPT_FORCE, OPT_FORCES,
-       OPT_PASS_TIME, OPT_STEADY };
+       OPT_PASS_TIME, OPT_STEADY, OPT_CHECKPOINT, OPT_RESUME };
 
 static const dem_opt_t options[] = {
 	{"end", OPT_END, "T", "simulated time, with a unit if wanted (20us)"},
@@ -53,6 +58,8 @@ static const dem_opt_t options[] = {
 	{"forces", OPT_FORCES, "FILE", "write the contact force history of the shots to FILE (a history stream)"},
 	{"pass-time", OPT_PASS_TIME, "T", "longest time of a pass (default 200us)"},
 	{"steady", OPT_STEADY, "F", "a pass ends when the block's kinetic energy is below F times its peak (default 0.01)"},
+	{"checkpoint", OPT_CHECKPOINT, "FILE", "after each pass save the run to FILE (atomically) and its frames to FILE.journal"},
+	{"resume", OPT_RESUME, NULL, "continue the run saved in the --checkpoint FILE (same scene and shots)"},
 	{"vtu", OPT_VTU, "FILE", "also write the last frame to FILE for ParaView"},
 	{"threads", OPT_THREADS, "N", "OpenMP threads for the element loop (default: OMP_NUM_THREADS or all)"},
 	DEM_OPTS_COMMON,
@@ -75,9 +82,9 @@ static const char epilogue[] =
 
 struct cmdline {
 	dem_common_t com;
-	const char *vtu, *forces, *shots;
+	const char *vtu, *forces, *shots, *checkpoint;
 	unsigned long threads;
-	int force;
+	int force, resume;
 };
 
 static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
@@ -104,6 +111,8 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 		case OPT_LAMBDA: dem_common_override(m, "run.lambda", optarg, "--lambda"); break;
 		case OPT_FORCE: cl->force = 1; break;
 		case OPT_FORCES: cl->forces = optarg; break;
+		case OPT_CHECKPOINT: cl->checkpoint = optarg; break;
+		case OPT_RESUME: cl->resume = 1; break;
 		case OPT_PASS_TIME: dem_common_override(m, "run.pass_time", optarg, "--pass-time"); break;
 		case OPT_STEADY: dem_common_override(m, "run.steady", optarg, "--steady"); break;
 		case OPT_THREADS:
@@ -118,6 +127,8 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 			cl->shots = argv[optind++];
 		if (optind < argc)
 			dem_cli_error(&c, "unexpected argument '%s' (one shot stream at most)", argv[optind]);
+		if (cl->resume && !cl->checkpoint)
+			dem_cli_error(&c, "--resume needs --checkpoint FILE");
 		if (dem_cli_finish(&c))
 			done = DEM_EUSAGE;
 	}
@@ -498,6 +509,8 @@ struct shotin {
 	dem_shot_t *sh;
 	size_t n, cap;
 	long pass;              /* last pass read, -1 at first */
+	uLong crc;              /* CRC-32 of the rows read (SI values) */
+	uint64_t rows;
 };
 
 static int shotin_open(struct shotin *in, const char *path, dem_error_t *e)
@@ -567,6 +580,8 @@ static int shotin_pass(struct shotin *in, dem_error_t *e)
 					     "(towards the block) and t >= 0", dem_reader_where(in->r)), -1;
 		in->pass = pass;
 		in->have = 0;
+		in->crc = crc32(in->crc, (const Bytef *)v, sizeof v);
+		in->rows++;
 	}
 }
 
@@ -596,11 +611,329 @@ static int open_forces(const char *path, int argc, char **args, dem_writer_t **w
 	return rc;
 }
 
+
+/* ---- checkpoints ----------------------------------------------------------
+
+ * After each pass the run is saved in two files:
+ *  - FILE.journal, appended: the frames (and force history rows) written so
+ *    far, as raw doubles, so that a resumed run can write the complete
+ *    output streams again (outputs are written whole, atomically, with
+ *    their trailer only at the end: they cannot be appended to);
+ *  - FILE, replaced atomically (temporary name, fsync, rename): a header
+ *    (what the run is: the resolved scene's checksum, the shot rows read and
+ *    their checksum, the passes done, the journal's length and checksum at
+ *    that point) and the explicit model (dem_fe_save).
+ * The journal is synced before the checkpoint names its length, so a kill
+ * at any moment leaves a checkpoint whose journal prefix is complete; a
+ * resumed run cuts the journal back to that length.  Shots and contact
+ * states do not persist across passes (dem_shotset_begin starts afresh),
+ * so the model and the position in the shot stream are the whole state. */
+
+#define CK_VERSION 1
+static const char ck_magic[8] = "DEMSHOT\x01";
+enum { J_FRAME = 1, J_FORCE = 2 };
+
+typedef struct ck_head {
+	char magic[8];
+	uint32_t version, scene_crc, shots_crc, forces;
+	uint64_t shot_rows;
+	int64_t passes;
+	uint64_t jlen;
+	uint32_t jcrc, pad;
+} ck_head_t;
+
+struct ckpt {
+	const char *path;
+	char *jpath;
+	FILE *j;                /* the journal */
+	uLong jcrc;
+	uint64_t jlen;
+	uint32_t scene_crc;
+	int forces;
+	long stop_after;        /* DEMSHOT_STOP_AFTER: testing aid */
+	double save_s;
+	size_t size;            /* of the last checkpoint, bytes */
+};
+
+static int ck_jwrite(struct ckpt *ck, const void *p, size_t n, dem_error_t *e)
+{
+	if (fwrite(p, 1, n, ck->j) != n)
+		return dem_error_set(e, DEM_EIO, "%s: %s", ck->jpath, strerror(errno));
+	ck->jcrc = crc32(ck->jcrc, p, (uInt)n);
+	ck->jlen += n;
+	return DEM_OK;
+}
+
+static int ck_frame(struct ckpt *ck, const dem_mesh_t *m, unsigned pass, double t,
+		    const struct fields *f, dem_error_t *e)
+{
+	uint32_t tag[2] = {J_FRAME, pass};
+	if (!ck)
+		return DEM_OK;
+	return ck_jwrite(ck, tag, sizeof tag, e) || ck_jwrite(ck, &t, sizeof t, e) ||
+	       ck_jwrite(ck, f->u, 3 * m->nn * sizeof *f->u, e) ||
+	       ck_jwrite(ck, f->sig, 6 * m->ne * sizeof *f->sig, e) ||
+	       ck_jwrite(ck, f->eps, 6 * m->ne * sizeof *f->eps, e) ||
+	       ck_jwrite(ck, f->ep, m->ne * sizeof *f->ep, e) ? e->code : DEM_OK;
+}
+
+static int ck_force(struct ckpt *ck, const double row[8], dem_error_t *e)
+{
+	uint32_t tag[2] = {J_FORCE, 0};
+	if (!ck)
+		return DEM_OK;
+	return ck_jwrite(ck, tag, sizeof tag, e) || ck_jwrite(ck, row, 8 * sizeof *row, e)
+	       ? e->code : DEM_OK;
+}
+
+/* The resolved scene's checksum: what the run computes from. */
+static uint32_t scene_crc(const dem_scene_t *s)
+{
+	char *buf = NULL;
+	size_t n = 0;
+	FILE *f = open_memstream(&buf, &n);
+	uLong c = crc32(0, Z_NULL, 0);
+	if (f) {
+		dem_scene_dump(s, f);
+		fclose(f);
+		c = crc32(c, (const Bytef *)buf, (uInt)n);
+	}
+	free(buf);
+	return (uint32_t)c;
+}
+
+static int ck_init(struct ckpt *ck, const char *path, const dem_scene_t *s, int forces,
+		   dem_error_t *e)
+{
+	const char *stop = getenv("DEMSHOT_STOP_AFTER");
+	memset(ck, 0, sizeof *ck);
+	ck->path = path;
+	ck->scene_crc = scene_crc(s);
+	ck->forces = forces;
+	ck->stop_after = stop && *stop ? strtol(stop, NULL, 10) : -1;
+	ck->jpath = malloc(strlen(path) + sizeof ".journal");
+	if (!ck->jpath)
+		return dem_error_nomem(e, "checkpoint");
+	strcpy(ck->jpath, path);
+	strcat(ck->jpath, ".journal");
+	return DEM_OK;
+}
+
+/* A fresh run: no old checkpoint may name the journal being rewritten. */
+static int ck_fresh(struct ckpt *ck, dem_error_t *e)
+{
+	if (remove(ck->path) && errno != ENOENT)
+		return dem_error_set(e, DEM_EIO, "%s: %s", ck->path, strerror(errno));
+	ck->j = fopen(ck->jpath, "wb");
+	if (!ck->j)
+		return dem_error_set(e, DEM_EIO, "%s: %s", ck->jpath, strerror(errno));
+	ck->jcrc = crc32(0, Z_NULL, 0);
+	ck->jlen = 0;
+	return DEM_OK;
+}
+
+/* Save after a pass: sync the journal, then write FILE atomically. */
+static int ck_save(struct ckpt *ck, const dem_fe_t *fe, const struct shotin *in, long passes,
+		   dem_error_t *e)
+{
+	double t0 = dem_wall();
+	ck_head_t h;
+	char *tmp;
+	FILE *f = NULL;
+	int fd, rc = DEM_OK;
+
+	if (fflush(ck->j) || fsync(fileno(ck->j)))
+		return dem_error_set(e, DEM_EIO, "%s: %s", ck->jpath, strerror(errno));
+	memset(&h, 0, sizeof h);
+	memcpy(h.magic, ck_magic, sizeof h.magic);
+	h.version = CK_VERSION;
+	h.scene_crc = ck->scene_crc;
+	h.shots_crc = (uint32_t)in->crc;
+	h.shot_rows = in->rows;
+	h.forces = (uint32_t)ck->forces;
+	h.passes = passes;
+	h.jlen = ck->jlen;
+	h.jcrc = (uint32_t)ck->jcrc;
+	uint32_t hcrc = (uint32_t)crc32(crc32(0, Z_NULL, 0), (const Bytef *)&h, sizeof h);
+	if (!(tmp = malloc(strlen(ck->path) + sizeof ".tmpXXXXXX")))
+		return dem_error_nomem(e, "checkpoint");
+	strcpy(tmp, ck->path);
+	strcat(tmp, ".tmpXXXXXX");
+	if ((fd = mkstemp(tmp)) < 0 || !(f = fdopen(fd, "wb"))) {
+		rc = dem_error_set(e, DEM_EIO, "%s: %s", tmp, strerror(errno));
+		if (fd >= 0)
+			close(fd), remove(tmp);
+		free(tmp);
+		return rc;
+	}
+	if (fwrite(&h, sizeof h, 1, f) != 1 || fwrite(&hcrc, sizeof hcrc, 1, f) != 1)
+		rc = dem_error_set(e, DEM_EIO, "%s: write error", tmp);
+	else
+		rc = dem_fe_save(fe, f, e);
+	if (!rc) {
+		long sz = ftell(f);
+		ck->size = sz > 0 ? (size_t)sz : 0;
+		if (fflush(f) || fsync(fileno(f)))
+			rc = dem_error_set(e, DEM_EIO, "%s: %s", tmp, strerror(errno));
+	}
+	if (fclose(f) && !rc)
+		rc = dem_error_set(e, DEM_EIO, "%s: %s", tmp, strerror(errno));
+	if (!rc && rename(tmp, ck->path))
+		rc = dem_error_set(e, DEM_EIO, "%s: %s", ck->path, strerror(errno));
+	if (rc)
+		remove(tmp);
+	free(tmp);
+	ck->save_s += dem_wall() - t0;
+	return rc;
+}
+
+/* Resume: read FILE into fe, skip the shot stream's passes done (checking
+ * they are the ones the checkpoint saw), write the journal's frames and
+ * force rows to the outputs again (f keeps the last frame), and cut the
+ * journal back to the checkpoint.  *passes: the passes done; 0 with no
+ * checkpoint (a run killed in its first pass starts again). */
+static int ck_resume(struct ckpt *ck, dem_fe_t *fe, struct shotin *in, const dem_mesh_t *m,
+		     dem_state_writer_t *w, dem_writer_t *fw, struct fields *fl, long *passes,
+		     int quiet, dem_error_t *e)
+{
+	ck_head_t h;
+	uint32_t hcrc;
+	int rc;
+	FILE *f = fopen(ck->path, "rb");
+
+	*passes = 0;
+	if (!f && errno == ENOENT) {
+		fprintf(stderr, "%s: %s: no checkpoint; starting from the first pass\n", PROG,
+			ck->path);
+		return ck_fresh(ck, e);
+	}
+	if (!f)
+		return dem_error_set(e, DEM_EIO, "%s: %s", ck->path, strerror(errno));
+	if (fread(&h, sizeof h, 1, f) != 1 || fread(&hcrc, sizeof hcrc, 1, f) != 1) {
+		fclose(f);
+		return dem_error_set(e, DEM_EINPUT, "%s: truncated checkpoint", ck->path);
+	}
+	if (memcmp(h.magic, ck_magic, sizeof h.magic) || h.version != CK_VERSION) {
+		fclose(f);
+		return dem_error_set(e, DEM_EINPUT, "%s: not a demshot checkpoint (version %d)",
+				     ck->path, CK_VERSION);
+	}
+	if (hcrc != (uint32_t)crc32(crc32(0, Z_NULL, 0), (const Bytef *)&h, sizeof h)) {
+		fclose(f);
+		return dem_error_set(e, DEM_EINPUT, "%s: corrupt checkpoint (header checksum)",
+				     ck->path);
+	}
+	if (h.scene_crc != ck->scene_crc) {
+		fclose(f);
+		return dem_error_set(e, DEM_EINPUT, "%s: the checkpoint is of another scene (the "
+				     "resolved scene's checksum is %08x, this run's %08x: see "
+				     "--dump-scene)", ck->path, (unsigned)h.scene_crc,
+				     (unsigned)ck->scene_crc);
+	}
+	if (h.forces != (uint32_t)ck->forces) {
+		fclose(f);
+		return dem_error_set(e, DEM_EINPUT, "%s: the checkpoint was written %s --forces; "
+				     "resume %s it", ck->path, h.forces ? "with" : "without",
+				     h.forces ? "with" : "without");
+	}
+	rc = dem_fe_load(fe, f, e);
+	fclose(f);
+	if (rc)
+		return dem_error_set(e, rc, "%s: %s", ck->path, e->msg);
+	/* the shot stream's passes done */
+	for (int64_t k = 0; k < h.passes; k++) {
+		int r = shotin_pass(in, e);
+		if (r < 0)
+			return e->code;
+		if (r == 0)
+			return dem_error_set(e, DEM_EINPUT, "%s: the shot stream has %lld passes; the "
+					     "checkpoint %s was written after %lld", dem_reader_name(in->r),
+					     (long long)k, ck->path, (long long)h.passes);
+	}
+	if (in->rows != h.shot_rows || (uint32_t)in->crc != h.shots_crc)
+		return dem_error_set(e, DEM_EINPUT, "%s: the checkpoint %s is of another shot stream "
+				     "(its first %lld passes: %llu rows, checksum %08x; here %llu rows, "
+				     "%08x)", dem_reader_name(in->r), ck->path, (long long)h.passes,
+				     (unsigned long long)h.shot_rows, (unsigned)h.shots_crc,
+				     (unsigned long long)in->rows, (unsigned)in->crc);
+	/* the frames and rows written so far */
+	ck->j = fopen(ck->jpath, "r+b");
+	if (!ck->j)
+		return dem_error_set(e, DEM_EINPUT, "%s: %s (the checkpoint's journal)", ck->jpath,
+				     strerror(errno));
+	uLong c = crc32(0, Z_NULL, 0);
+	uint64_t len = 0;
+	size_t fsz = (3 * m->nn + 13 * m->ne) * sizeof(double);
+	while (len < h.jlen) {
+		uint32_t tag[2];
+		double t, row[8];
+		if (fread(tag, sizeof tag, 1, ck->j) != 1)
+			goto short_journal;
+		c = crc32(c, (const Bytef *)tag, sizeof tag);
+		len += sizeof tag;
+		if (tag[0] == J_FRAME) {
+			if (fread(&t, sizeof t, 1, ck->j) != 1 ||
+			    fread(fl->u, sizeof *fl->u, 3 * m->nn, ck->j) != 3 * m->nn ||
+			    fread(fl->sig, sizeof *fl->sig, 6 * m->ne, ck->j) != 6 * m->ne ||
+			    fread(fl->eps, sizeof *fl->eps, 6 * m->ne, ck->j) != 6 * m->ne ||
+			    fread(fl->ep, sizeof *fl->ep, m->ne, ck->j) != m->ne)
+				goto short_journal;
+			c = crc32(c, (const Bytef *)&t, sizeof t);
+			c = crc32(c, (const Bytef *)fl->u, (uInt)(3 * m->nn * sizeof *fl->u));
+			c = crc32(c, (const Bytef *)fl->sig, (uInt)(6 * m->ne * sizeof *fl->sig));
+			c = crc32(c, (const Bytef *)fl->eps, (uInt)(6 * m->ne * sizeof *fl->eps));
+			c = crc32(c, (const Bytef *)fl->ep, (uInt)(m->ne * sizeof *fl->ep));
+			len += sizeof t + fsz;
+			if (len <= h.jlen && (rc = dem_state_write_frame(w, tag[1], t, fl->u, fl->sig,
+									 fl->eps, fl->ep, e)))
+				return rc;
+		} else if (tag[0] == J_FORCE) {
+			if (fread(row, sizeof row, 1, ck->j) != 1)
+				goto short_journal;
+			c = crc32(c, (const Bytef *)row, sizeof row);
+			len += sizeof row;
+			if (len <= h.jlen && fw && (rc = dem_writer_row(fw, row, e)))
+				return rc;
+		} else {
+			break;
+		}
+	}
+	if (len != h.jlen || (uint32_t)c != h.jcrc)
+		return dem_error_set(e, DEM_EINPUT, "%s: corrupt journal (it does not match the "
+				     "checkpoint %s)", ck->jpath, ck->path);
+	if (fflush(ck->j) || ftruncate(fileno(ck->j), (off_t)len) || fseek(ck->j, 0, SEEK_END))
+		return dem_error_set(e, DEM_EIO, "%s: %s", ck->jpath, strerror(errno));
+	ck->jcrc = c;
+	ck->jlen = len;
+	*passes = (long)h.passes;
+	if (!quiet)
+		fprintf(stderr, "%s: resuming after pass %ld (%lld passes done) at t = %.4g s\n",
+			PROG, in->pass, (long long)h.passes, dem_fe_time(fe));
+	return DEM_OK;
+short_journal:
+	return dem_error_set(e, DEM_EINPUT, "%s: truncated journal (the checkpoint %s names %llu "
+			     "bytes)", ck->jpath, ck->path, (unsigned long long)h.jlen);
+}
+
+static void ck_close(struct ckpt *ck, int ok)
+{
+	if (ck->j)
+		fclose(ck->j);
+	ck->j = NULL;
+	/* a finished run's outputs are complete: its checkpoint has done its job */
+	if (ok) {
+		remove(ck->path);
+		remove(ck->jpath);
+	}
+	free(ck->jpath);
+	ck->jpath = NULL;
+}
+
 /* One pass: place the shots, step until steady or the pass time, write
  * the frame. */
 static int run_pass(dem_fe_t *fe, dem_shotset_t *S, const struct settings *st,
 		    const struct shotin *in, int quiet, dem_state_writer_t *w,
-		    dem_writer_t *fw, struct fields *f, double *next_report,
+		    dem_writer_t *fw, struct fields *f, struct ckpt *ck, double *next_report,
 		    dem_error_t *e)
 {
 	double t0 = dem_fe_time(fe), peak = 0;
@@ -621,7 +954,7 @@ static int run_pass(dem_fe_t *fe, dem_shotset_t *S, const struct settings *st,
 					continue;
 				double row[8] = {pass, (double)i, t - t0, b->Fn, b->Ft,
 						 b->F[0], b->F[1], b->F[2]};
-				if ((rc = dem_writer_row(fw, row, e)))
+				if ((rc = dem_writer_row(fw, row, e)) || (rc = ck_force(ck, row, e)))
 					return rc;
 			}
 		}
@@ -647,24 +980,36 @@ static int run_pass(dem_fe_t *fe, dem_shotset_t *S, const struct settings *st,
 		}
 	}
 	fields_get(fe, f);
-	return dem_state_write_frame(w, pass, dem_fe_time(fe), f->u, f->sig, f->eps, f->ep, e);
+	if ((rc = dem_state_write_frame(w, pass, dem_fe_time(fe), f->u, f->sig, f->eps, f->ep, e)))
+		return rc;
+	return ck_frame(ck, &st->mesh, pass, dem_fe_time(fe), f, e);
 }
 
 static int run_shots(dem_fe_t *fe, dem_shotset_t *S, const struct settings *st,
 		     struct shotin *in, int quiet, dem_state_writer_t *w, dem_writer_t *fw,
-		     struct fields *f, long *passes, dem_error_t *e)
+		     struct fields *f, struct ckpt *ck, long *passes, dem_error_t *e)
 {
 	double next_report = dem_wall() + 2;
 	int k, rc;
 
-	*passes = 0;
+	/* *passes: those done before (a resumed run) */
 	while ((k = shotin_pass(in, e)) > 0) {
-		if ((rc = run_pass(fe, S, st, in, quiet, w, fw, f, &next_report, e)))
+		if ((rc = run_pass(fe, S, st, in, quiet, w, fw, f, ck, &next_report, e)))
 			return rc;
 		++*passes;
 		if (!quiet)
 			fprintf(stderr, "%s: pass %lu done at t = %.4g s\n", PROG,
 				in->sh[0].pass, dem_fe_time(fe));
+		if (ck && (rc = ck_save(ck, fe, in, *passes, e)))
+			return rc;
+		if (ck && ck->stop_after == *passes) {
+			/* the testing aid: die as a killed run would, leaving
+			 * everything as it is */
+			fprintf(stderr, "%s: DEMSHOT_STOP_AFTER=%ld: killing myself\n", PROG,
+				ck->stop_after);
+			fflush(NULL);
+			raise(SIGKILL);
+		}
 	}
 	if (k < 0)
 		return e->code;
@@ -685,7 +1030,9 @@ int main(int argc, char **argv)
 	dem_writer_t *fw = NULL;
 	dem_shotset_t *S = NULL;
 	struct shotin in = {0};
-	int have_in = 0;
+	struct ckpt ck = {0};
+	int have_in = 0, have_ck = 0;
+	dem_fe_stats_t fs0 = {0};   /* a resumed run's model: the work before */
 	long passes = 0;
 	dem_cost_t cost;
 	int rc;
@@ -713,8 +1060,9 @@ int main(int argc, char **argv)
 		dem_scene_dump(scene, stdout);
 		goto done;
 	}
-	if (!st.have_shots && (cl.forces)) {
-		rc = dem_error_set(&e, DEM_EUSAGE, "--forces needs shots (a shot stream)");
+	if (!st.have_shots && (cl.forces || cl.checkpoint)) {
+		rc = dem_error_set(&e, DEM_EUSAGE, "%s needs shots (a shot stream)",
+				   cl.forces ? "--forces" : "--checkpoint");
 		goto fail;
 	}
 	if (st.have_shots) {
@@ -763,9 +1111,19 @@ int main(int argc, char **argv)
 	if ((rc = open_state(&cl, &st, argc, args, &w, &e)) ||
 	    (cl.forces && (rc = open_forces(cl.forces, argc, args, &fw, &e))))
 		goto fail;
+	if (cl.checkpoint) {
+		have_ck = 1;
+		if ((rc = ck_init(&ck, cl.checkpoint, scene, cl.forces != NULL, &e)) ||
+		    (rc = cl.resume ? ck_resume(&ck, fe, &in, &st.mesh, w, fw, &f, &passes,
+						 cl.com.quiet, &e)
+				    : ck_fresh(&ck, &e)))
+			goto fail;
+		dem_fe_stats(fe, &fs0);
+	}
 	t = dem_wall();
 	if (st.have_shots)
-		rc = run_shots(fe, S, &st, &in, cl.com.quiet, w, fw, &f, &passes, &e);
+		rc = run_shots(fe, S, &st, &in, cl.com.quiet, w, fw, &f, have_ck ? &ck : NULL,
+			       &passes, &e);
 	else
 		rc = run(fe, &st, cl.com.quiet, w, &f, &cost, &e);
 	if (rc)
@@ -780,6 +1138,12 @@ int main(int argc, char **argv)
 	}
 	if (rc)
 		goto fail;
+	if (have_ck) {
+		dem_cost_time(&cost, "checkpoint", ck.save_s);
+		dem_cost_count(&cost, "checkpoint_mb", (double)ck.size / 1048576);
+		ck_close(&ck, 1);
+		have_ck = 0;
+	}
 	if (cl.vtu && (rc = dem_vtu_write(cl.vtu, &st.mesh,
 					  &(dem_vtu_fields_t){f.u, f.sig, f.eps, f.ep},
 					  1, &e)))
@@ -789,6 +1153,8 @@ int main(int argc, char **argv)
 	dem_fe_stats_t fs;
 	dem_fe_energy(fe, &en);
 	dem_fe_stats(fe, &fs);
+	/* this process's work (steps stay the run's) */
+	fs.elem_s -= fs0.elem_s, fs.node_s -= fs0.node_s, fs.elem_cycles -= fs0.elem_cycles;
 	if (cl.com.verbose)
 		fprintf(stderr, "%s: energies at t = %.6g s (J): kinetic %.6g, "
 			"internal %.6g (plastic %.6g), hourglass %.6g, damping "
@@ -843,6 +1209,8 @@ fail:
 		fprintf(stderr, "Try '%s --help' for more information.\n", PROG);
 	dem_state_writer_abort(w);
 	dem_writer_abort(fw);
+	if (have_ck)
+		ck_close(&ck, 0);
 	if (have_in)
 		shotin_close(&in);
 	dem_shotset_free(S);

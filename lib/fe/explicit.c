@@ -22,6 +22,7 @@
 #include <omp.h>
 #include <stdlib.h>
 #include <string.h>
+#include <zlib.h>
 
 #include "core/cost.h"
 #include "fe/hex8.h"
@@ -964,4 +965,178 @@ void dem_fe_stats(const dem_fe_t *fe, dem_fe_stats_t *s)
 	s->plastic_updates = fe->nplastic;
 	s->elem_s = fe->elem_s;
 	s->node_s = fe->node_s;
+}
+
+/* ---- Checkpoint ------------------------------------------------------------- */
+
+/* Everything dem_fe_step reads that it wrote before, as one table: a field
+ * added to struct dem_fe that carries over from step to step needs its
+ * line here (and CKPT_VERSION raised).  Not saved: fx (zero between
+ * steps), the per-step scratch (chunk, slab sums), what dem_fe_create
+ * derives from the mesh (mass, slabs), and the failure (a failed model is
+ * not saved). */
+#define CKPT_VERSION 1
+#define CKPT_MAXITEM 32
+
+typedef struct ckpt_item {
+	const char *name;
+	void *p;
+	size_t size;
+} ckpt_item_t;
+
+static int ckpt_items(const dem_fe_t *cfe, ckpt_item_t *it)
+{
+	dem_fe_t *fe = (dem_fe_t *)cfe;  /* saved from, or loaded into */
+	size_t nn = fe->nn, ne = fe->ne, nl = fe->nblk * NB, d = sizeof(double);
+	int full = fe->o.rule == DEM_FE_FULL, n = 0;
+#define ITEM(nm, ptr, sz) (it[n++] = (ckpt_item_t){ nm, ptr, sz })
+	ITEM("x", fe->x, 3 * nn * d);
+	ITEM("v", fe->v, 3 * nn * d);
+	ITEM("fi", fe->fi, 3 * nn * d);
+	ITEM("sig", fe->sig, (full ? ne * 2 * 6 * NB : 6 * nl) * d);
+	ITEM("ep", fe->ep, (full ? ne * 2 * NB : nl) * d);
+	if (fe->Qs)
+		ITEM("Qs", fe->Qs, 12 * nl * d);
+	if (fe->eps)
+		ITEM("eps", fe->eps, (full ? 6 * ne : 6 * nl) * d);
+	if (fe->kdt)
+		ITEM("kdt", fe->kdt, (full ? ne : nl) * d);
+	ITEM("t", &fe->t, d);
+	ITEM("dt_prev", &fe->dt_prev, d);
+	ITEM("dt_stable", &fe->dt_stable, d);
+	ITEM("steps", &fe->steps, sizeof fe->steps);
+	ITEM("T0", &fe->T0, d);
+	ITEM("wx_acc", &fe->wx_acc, d);
+	ITEM("wd_acc", &fe->wd_acc, d);
+	ITEM("eint", &fe->eint, d);
+	ITEM("epl", &fe->epl, d);
+	ITEM("ehg", &fe->ehg, d);
+	ITEM("en", &fe->en, sizeof fe->en);
+	ITEM("cycles", &fe->cycles, d);
+	ITEM("nplastic", &fe->nplastic, d);
+	ITEM("elem_s", &fe->elem_s, d);
+	ITEM("node_s", &fe->node_s, d);
+#undef ITEM
+	return n;
+}
+
+/* The header: what the model was made from.  Zeroed before filling, so
+ * its padding is zero and it can be compared and checksummed whole. */
+typedef struct ckpt_head {
+	char magic[8];
+	uint32_t version, nitem;
+	uint64_t nn, ne;
+	int32_t nx, ny, nz, rule, large, hg;
+	double dt_factor, damping, hg_stiff, hg_visc;
+	uint32_t mesh_crc, mat_crc;
+} ckpt_head_t;
+
+static const char ckpt_magic[8] = "DEMFE\0ck";
+
+static uLong crc_add(uLong c, const void *p, size_t n)
+{
+	const Bytef *b = p;
+	while (n > 0) {
+		uInt k = n > (1u << 30) ? 1u << 30 : (uInt)n;
+		c = crc32(c, b, k);
+		b += k, n -= k;
+	}
+	return c;
+}
+
+static void ckpt_head(const dem_fe_t *fe, ckpt_head_t *h)
+{
+	const dem_mesh_t *m = fe->mesh;
+	const dem_mat_t *a = fe->mat;
+	ckpt_item_t it[CKPT_MAXITEM];
+	memset(h, 0, sizeof *h);
+	memcpy(h->magic, ckpt_magic, sizeof h->magic);
+	h->version = CKPT_VERSION;
+	h->nitem = (uint32_t)ckpt_items(fe, it);
+	h->nn = fe->nn, h->ne = fe->ne;
+	h->nx = m->nx, h->ny = m->ny, h->nz = m->nz;
+	h->rule = (int32_t)fe->o.rule, h->large = fe->o.large, h->hg = fe->hg;
+	h->dt_factor = fe->o.dt_factor, h->damping = fe->o.damping;
+	h->hg_stiff = fe->o.hg_stiff, h->hg_visc = fe->o.hg_visc;
+	uLong c = crc32(0, Z_NULL, 0);
+	c = crc_add(c, m->X, 3 * m->nn * sizeof *m->X);
+	c = crc_add(c, m->hex, 8 * m->ne * sizeof *m->hex);
+	if (m->fix)
+		c = crc_add(c, m->fix, m->nn);
+	h->mesh_crc = (uint32_t)c;
+	double mp[7] = { a->E, a->nu, a->rho, (double)a->flags, (double)a->nhard, a->rate_m, a->rate_ref };
+	c = crc_add(crc32(0, Z_NULL, 0), mp, sizeof mp);
+	if (a->nhard > 0) {
+		c = crc_add(c, a->hep, (size_t)a->nhard * sizeof *a->hep);
+		c = crc_add(c, a->hsy, (size_t)a->nhard * sizeof *a->hsy);
+	}
+	h->mat_crc = (uint32_t)c;
+}
+
+int dem_fe_save(const dem_fe_t *fe, FILE *f, dem_error_t *e)
+{
+	ckpt_head_t h;
+	ckpt_item_t it[CKPT_MAXITEM];
+	int n = ckpt_items(fe, it);
+	ckpt_head(fe, &h);
+	uLong c = crc_add(crc32(0, Z_NULL, 0), &h, sizeof h);
+	int bad = fwrite(&h, sizeof h, 1, f) != 1;
+	for (int i = 0; i < n && !bad; i++) {
+		uint64_t sz = it[i].size;
+		c = crc_add(c, &sz, sizeof sz);
+		c = crc_add(c, it[i].p, it[i].size);
+		bad = fwrite(&sz, sizeof sz, 1, f) != 1 || fwrite(it[i].p, 1, it[i].size, f) != it[i].size;
+	}
+	uint32_t crc = (uint32_t)c;
+	if (bad || fwrite(&crc, sizeof crc, 1, f) != 1)
+		return dem_error_set(e, DEM_EIO, "checkpoint: write error");
+	return DEM_OK;
+}
+
+int dem_fe_load(dem_fe_t *fe, FILE *f, dem_error_t *e)
+{
+	ckpt_head_t h, w;
+	ckpt_item_t it[CKPT_MAXITEM];
+	int n = ckpt_items(fe, it);
+	ckpt_head(fe, &w);
+	if (fread(&h, sizeof h, 1, f) != 1)
+		return dem_error_set(e, DEM_EINPUT, "checkpoint: truncated (no model header)");
+	if (memcmp(h.magic, ckpt_magic, sizeof h.magic))
+		return dem_error_set(e, DEM_EINPUT, "checkpoint: not a model checkpoint (bad magic)");
+	if (h.version != w.version)
+		return dem_error_set(e, DEM_EINPUT, "checkpoint: model version %u, expected %u",
+				     (unsigned)h.version, (unsigned)w.version);
+	if (h.nn != w.nn || h.ne != w.ne || h.nx != w.nx || h.ny != w.ny || h.nz != w.nz)
+		return dem_error_set(e, DEM_EINPUT, "checkpoint: of a mesh of %d x %d x %d elements "
+				     "(%llu nodes), this one is %d x %d x %d (%zu nodes)", (int)h.nx,
+				     (int)h.ny, (int)h.nz, (unsigned long long)h.nn, w.nx, w.ny, w.nz, fe->nn);
+	if (h.mesh_crc != w.mesh_crc)
+		return dem_error_set(e, DEM_EINPUT, "checkpoint: of another mesh (same sizes, other "
+				     "coordinates or constraints)");
+	if (h.rule != w.rule || h.large != w.large || h.hg != w.hg || h.nitem != w.nitem ||
+	    memcmp(&h.dt_factor, &w.dt_factor, 4 * sizeof(double)))
+		return dem_error_set(e, DEM_EINPUT, "checkpoint: of other run options (integration "
+				     "rule, strain, time step factor, damping or hourglass control)");
+	if (h.mat_crc != w.mat_crc)
+		return dem_error_set(e, DEM_EINPUT, "checkpoint: of another material");
+	uLong c = crc_add(crc32(0, Z_NULL, 0), &h, sizeof h);
+	for (int i = 0; i < n; i++) {
+		uint64_t sz;
+		if (fread(&sz, sizeof sz, 1, f) != 1)
+			return dem_error_set(e, DEM_EINPUT, "checkpoint: truncated (at '%s')", it[i].name);
+		if (sz != it[i].size)
+			return dem_error_set(e, DEM_EINPUT, "checkpoint: '%s' has %llu bytes, expected %zu",
+					     it[i].name, (unsigned long long)sz, it[i].size);
+		if (fread(it[i].p, 1, it[i].size, f) != it[i].size)
+			return dem_error_set(e, DEM_EINPUT, "checkpoint: truncated (in '%s')", it[i].name);
+		c = crc_add(c, &sz, sizeof sz);
+		c = crc_add(c, it[i].p, it[i].size);
+	}
+	uint32_t crc;
+	if (fread(&crc, sizeof crc, 1, f) != 1)
+		return dem_error_set(e, DEM_EINPUT, "checkpoint: truncated (no checksum)");
+	if (crc != (uint32_t)c)
+		return dem_error_set(e, DEM_EINPUT, "checkpoint: corrupt (checksum mismatch)");
+	fe->failed = 0;
+	return DEM_OK;
 }

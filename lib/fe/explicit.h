@@ -91,6 +91,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #include "core/error.h"
 #include "fe/material.h"
@@ -218,5 +219,22 @@ typedef struct dem_fe_stats {
 } dem_fe_stats_t;
 
 void dem_fe_stats(const dem_fe_t *fe, dem_fe_stats_t *s);
+
+/* Checkpoint.  dem_fe_save writes the whole time-stepping state of the
+ * model (coordinates, velocities, internal forces, element stresses,
+ * plastic strains, hourglass and strain state, time, step sizes, energy
+ * sums and work counters) to f at its current position; dem_fe_load reads
+ * it back into a model made by dem_fe_create from the same mesh, material
+ * and options, after which stepping continues bit for bit as the model
+ * that was saved.  Loads (pressures, the hook) are not state: give them
+ * again.  The block starts with a header (magic, version, mesh sizes, the
+ * options and checksums of the mesh and material) and ends with a CRC-32
+ * of everything; native byte order (a checkpoint is for the machine that
+ * wrote it).  DEM_EINPUT for a checkpoint of another mesh, material or
+ * options, or a truncated or corrupt one (the message says which);
+ * DEM_EIO for a write error.  After a failed load the model's state is
+ * undefined: free it. */
+int dem_fe_save(const dem_fe_t *fe, FILE *f, dem_error_t *e);
+int dem_fe_load(dem_fe_t *fe, FILE *f, dem_error_t *e);
 
 #endif

@@ -453,7 +453,8 @@ static int rebuild(dem_shotset_t *S, const double *x, dem_error_t *e)
 	/* facets increasing per shot; states carried over by merge */
 	for (size_t s = 0; s < ns; s++) {
 		size_t a = S->off[s], b = S->off[s + 1];
-		qsort(S->cf + a, b - a, sizeof *S->cf, cmp_u32);
+		if (b - a > 1)
+			qsort(S->cf + a, b - a, sizeof *S->cf, cmp_u32);
 		size_t p = had ? S->off_old[s] : 0, pe = had ? S->off_old[s + 1] : 0;
 		for (size_t k = a; k < b; k++) {
 			while (p < pe && S->cf_old[p] < S->cf[k])
@@ -464,7 +465,8 @@ static int rebuild(dem_shotset_t *S, const double *x, dem_error_t *e)
 				dem_contact_state_reset(&S->cs[k]);
 		}
 	}
-	qsort(S->sp, nsp, sizeof *S->sp, cmp_pair);
+	if (nsp > 1)    /* qsort wants a pointer even for nothing (UBSan) */
+		qsort(S->sp, nsp, sizeof *S->sp, cmp_pair);
 	{
 		size_t p = 0, pe = had ? S->nsp_old : 0;
 		for (size_t k = 0; k < nsp; k++) {

@@ -248,3 +248,105 @@ YAML
 	[ "$status" -eq 1 ]
 	[ ! -e "$T/x.state" ]
 }
+
+# ---- checkpoints ----------------------------------------------------------
+# Reference: the uninterrupted run; a run killed after the checkpoint of
+# pass 2 (DEMSHOT_STOP_AFTER, SIGKILL) and resumed must give the same
+# frames and force rows bit for bit.
+
+# the rows of a state stream, decoded, without its header (provenance)
+state_rows() {
+	local off
+	off=$(gzip -dc "$1" | grep -abo -m1 '^# data' | cut -d: -f1)
+	gzip -dc "$1" | tail -c +$((off + 1)) | md5sum
+}
+
+ckpt_setup() {
+	shot_scene
+	dempack shots --grid 1 --passes 3 --area 0.4mm:0.4mm --speed 19 --shot-radius 0.5mm --seed 1 > "$T/s3.txt"
+	demshot -s "$T/shot.yaml" -q --forces "$T/fa.txt" -o "$T/a.state" "$T/s3.txt" 2> "$T/a.log"
+	run --separate-stderr env DEMSHOT_STOP_AFTER=2 demshot -s "$T/shot.yaml" -q --forces "$T/fb.txt" --checkpoint "$T/ck" -o "$T/b.state" "$T/s3.txt"
+	[ "$status" -eq 137 ]
+	[ -s "$T/ck" ] && [ -s "$T/ck.journal" ]
+	[ ! -e "$T/b.state" ] && [ ! -e "$T/fb.txt" ]
+}
+
+@test "demshot: a run killed after pass 2 and resumed gives the frames of the uninterrupted run bit for bit" {
+	ckpt_setup
+	run --separate-stderr demshot -s "$T/shot.yaml" --forces "$T/fb.txt" --checkpoint "$T/ck" --resume -o "$T/b.state" "$T/s3.txt"
+	echo "$stderr"
+	[ "$status" -eq 0 ]
+	grep -q "resuming after pass 1 (2 passes done)" <<< "$stderr"
+	[[ ${stderr_lines[-1]} =~ passes=3 ]]
+	# only the last pass was run again: fewer element updates than the whole run
+	full=$(grep -o 'elem_cycles=[0-9]*' "$T/a.log" | cut -d= -f2)
+	part=$(grep -o 'elem_cycles=[0-9]*' <<< "${stderr_lines[-1]}" | cut -d= -f2)
+	echo "element updates: whole run $full, resumed $part"
+	[ "$part" -gt 0 ] && [ $((3 * part)) -lt $((2 * full)) ]
+	[ "$(state_rows "$T/a.state")" = "$(state_rows "$T/b.state")" ]
+	[ "$(demprofile --pass all "$T/a.state" | grep -v '^#')" = "$(demprofile --pass all "$T/b.state" | grep -v '^#')" ]
+	cmp <(grep -v '^# prog' "$T/fa.txt") <(grep -v '^# prog' "$T/fb.txt")
+	# a finished run removes its checkpoint
+	[ ! -e "$T/ck" ] && [ ! -e "$T/ck.journal" ]
+	# 3 frames, the first two copied from the journal
+	[ "$(demprofile --pass all "$T/b.state" | grep -v '^#' | cut -d' ' -f1 | sort -u | wc -l)" -eq 3 ]
+}
+
+@test "demshot: a checkpoint of another scene or shot stream is refused with exit 1 and no output" {
+	ckpt_setup
+	sed 's/pass_time: 20 us/pass_time: 21 us/' "$T/shot.yaml" > "$T/other.yaml"
+	run --separate-stderr demshot -s "$T/other.yaml" --forces "$T/fb.txt" --checkpoint "$T/ck" --resume -o "$T/b.state" "$T/s3.txt"
+	echo "$stderr"
+	[ "$status" -eq 1 ]
+	grep -q "ck: the checkpoint is of another scene" <<< "$stderr"
+	[ ! -e "$T/b.state" ]
+	# the same stream but for the impact point of pass 1
+	sed "s/^1 0 -9/1 0 -8/" "$T/s3.txt" > "$T/t3.txt"
+	cmp -s "$T/s3.txt" "$T/t3.txt" && false
+	run --separate-stderr demshot -s "$T/shot.yaml" --forces "$T/fb.txt" --checkpoint "$T/ck" --resume -o "$T/b.state" "$T/t3.txt"
+	echo "$stderr"
+	[ "$status" -eq 1 ]
+	grep -q "is of another shot stream" <<< "$stderr"
+	run --separate-stderr demshot -s "$T/shot.yaml" --checkpoint "$T/ck" --resume -o "$T/b.state" "$T/s3.txt"
+	[ "$status" -eq 1 ]
+	grep -q "written with --forces" <<< "$stderr"
+	[ ! -e "$T/b.state" ]
+}
+
+@test "demshot: a truncated or corrupt checkpoint or journal is refused with exit 1" {
+	ckpt_setup
+	cp "$T/ck" "$T/ck.good"
+	cp "$T/ck.journal" "$T/j.good"
+	n=$(stat -c %s "$T/ck")
+	head -c $((n - 100)) "$T/ck.good" > "$T/ck"
+	run --separate-stderr demshot -s "$T/shot.yaml" --forces "$T/fb.txt" --checkpoint "$T/ck" --resume -o "$T/b.state" "$T/s3.txt"
+	echo "$stderr"
+	[ "$status" -eq 1 ]
+	grep -q "checkpoint: truncated" <<< "$stderr"
+	# one byte flipped in the middle of the model
+	cp "$T/ck.good" "$T/ck"
+	printf '\xff' | dd of="$T/ck" bs=1 seek=$((n / 2)) conv=notrunc 2> /dev/null
+	cmp -s "$T/ck" "$T/ck.good" && false
+	run --separate-stderr demshot -s "$T/shot.yaml" --forces "$T/fb.txt" --checkpoint "$T/ck" --resume -o "$T/b.state" "$T/s3.txt"
+	echo "$stderr"
+	[ "$status" -eq 1 ]
+	grep -q "checkpoint: corrupt (checksum mismatch)" <<< "$stderr"
+	# a journal cut short
+	cp "$T/ck.good" "$T/ck"
+	head -c 1000 "$T/j.good" > "$T/ck.journal"
+	run --separate-stderr demshot -s "$T/shot.yaml" --forces "$T/fb.txt" --checkpoint "$T/ck" --resume -o "$T/b.state" "$T/s3.txt"
+	echo "$stderr"
+	[ "$status" -eq 1 ]
+	grep -q "truncated journal" <<< "$stderr"
+	[ ! -e "$T/b.state" ] && [ ! -e "$T/fb.txt" ]
+	# not a checkpoint at all
+	cp "$T/s3.txt" "$T/ck"
+	run --separate-stderr demshot -s "$T/shot.yaml" --forces "$T/fb.txt" --checkpoint "$T/ck" --resume -o "$T/b.state" "$T/s3.txt"
+	[ "$status" -eq 1 ]
+	grep -q "not a demshot checkpoint" <<< "$stderr"
+}
+
+@test "demshot: --resume needs --checkpoint; --checkpoint needs shots" {
+	usage_error demshot -s "$T/pulse.yaml" --resume
+	usage_error demshot -s "$T/pulse.yaml" --checkpoint "$T/ck"
+}
