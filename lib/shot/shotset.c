@@ -464,7 +464,8 @@ static int rebuild(dem_shotset_t *S, const double *x, dem_error_t *e)
 				dem_contact_state_reset(&S->cs[k]);
 		}
 	}
-	qsort(S->sp, nsp, sizeof *S->sp, cmp_pair);
+	if (nsp)   /* S->sp may be NULL then (qsort wants a pointer) */
+		qsort(S->sp, nsp, sizeof *S->sp, cmp_pair);
 	{
 		size_t p = 0, pe = had ? S->nsp_old : 0;
 		for (size_t k = 0; k < nsp; k++) {
