@@ -150,6 +150,30 @@ close_to() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { r = a / b - 1; exit !(r 
 	[ "$(value iterations "$T/l")" -gt 1 ]
 }
 
+@test "demform: a strain-hardened layer on a thin plate of SS316 (Table 7.2) yields the unpeened face; Newton converges in the plastic increment" {
+	# the layer on its hardened flow surface, sxx = syy = -(366 MPa + 2430 MPa ep),
+	# ep from 0.5 at the surface to 0 at 0.5 mm (test_fe_implicit.c,
+	# test_j2_unpeened_face: the elastic face would be at 1.25 times the yield)
+	cat > "$T/hard" <<-EOF
+	0 -1581 0.5
+	0.25 -973.5 0.25
+	0.28 0 0.22
+	0.5 0 0
+	EOF
+	profile_stream "$T/hard" > "$T/hprof"
+	cat > "$T/ss.yaml" <<-EOF
+	material: {E: 193 GPa, nu: 0.328, yield: 366 MPa, hardening: 2430 MPa}
+	plate: {size: [6 mm, 6 mm, 0.75 mm], element: 0.5 mm, layers: 12, grading: 1.15, two_sided: true}
+	EOF
+	demform -s "$T/ss.yaml" --increments 4 --centre "$T/c" "$T/hprof" > "$T/sum" 2>/dev/null
+	# the deepest point of the centre: virgin, now yielded, on its flow surface
+	awk '!/^#/ { r = $0 } END { split(r, a); ep = a[8]; f = (366e6 + 2430e6 * ep) / -a[2]
+		exit !(ep > 1e-4 && f > 0.995 && f < 1.005) }' "$T/c"
+	# lambda 0.25, 0.5, 0.75 elastic (one iteration), 1 plastic (several)
+	awk '$1 == "newton:" { n[$3]++ } END { exit !(n[1] == 2 && n[2] == 2 && n[3] == 2 && n[4] > 3) }' "$T/sum"
+	awk '$1 == "residual_rel:" { exit !($2 < 1e-8) }' "$T/sum"
+}
+
 @test "demform --centre and --vtu: the centre stress table and the plate for ParaView" {
 	demform -s "$T/small.yaml" --centre "$T/c" --vtu "$T/p.vtu" -o "$T/sum" "$T/prof" 2>/dev/null
 	[ "$(grep -vc '^#' "$T/c")" -eq 16 ]
