@@ -11,6 +11,15 @@
  * same state).  The full-integration state is per element: two batches of
  * four Gauss points, sig[2][6][NB], ep[2][NB].
  *
+ * Runs.  In a block of NB elements along a row of the mesh (run[block]),
+ * element e has the nodes of element 0 plus e: the node data of the block
+ * are read as NB consecutive nodes (whole vectors, transposed in
+ * registers), and the forces of each pair of nodes I, I + 1 along the row
+ * are summed in registers and added to the NB + 1 nodes they reach, once
+ * each (the order of the additions at a node is fixed by the mesh, not by
+ * the threads).  Other blocks gather and scatter element by element.  The
+ * element state of the block PF ahead is prefetched.
+ *
  * Slabs.  Elements are numbered i fastest, then j, then k, so a slab of
  * whole k-layers is a contiguous range of elements.  Adjacent slabs share
  * a plane of nodes; slabs two apart share none, so all even slabs can add
@@ -30,6 +39,9 @@
 #define NB DEM_HEX8_NB
 #define NCHUNK 64     /* node chunks of the node loop (fixed: see header) */
 #define MAXSLAB 32    /* slabs of element layers */
+#ifndef PF
+#define PF 4 /* blocks ahead to prefetch */
+#endif
 #define PAR_MIN 20000 /* fewer elements than this: one thread by default */
 
 #if DEM_HEX8_NB != 4
@@ -46,6 +58,10 @@ typedef double vec4 __attribute__((vector_size(4 * sizeof(double))));
 #define CLONES
 #endif
 typedef long long lvec4 __attribute__((vector_size(4 * sizeof(double))));
+/* an unaligned vector in memory: one whole-vector load or store (GCC
+ * splits a memcpy of 32 bytes in halves, which a whole-vector access then
+ * fails to forward from) */
+typedef double uvec4 __attribute__((vector_size(4 * sizeof(double)), aligned(8), may_alias));
 
 enum { S_T, S_WXA, S_WXB, S_WDA, S_WDB, S_N };   /* node-loop sums */
 enum { E_INT, E_PL, E_HG, E_NPL, E_N };          /* element-loop sums */
@@ -74,6 +90,8 @@ struct dem_fe {
 	/* element state */
 	size_t nblk;
 	double *sig, *ep, *Qs, *eps, *kdt;
+	uint8_t *run;         /* one-point block whose element e has the nodes
+			       * of element 0 plus e (a run along a row) */
 	int hg;               /* hourglass control on */
 	int nthr;             /* threads */
 	int nslab;
@@ -153,6 +171,7 @@ void dem_fe_free(dem_fe_t *fe)
 		return;
 	free(fe->x), free(fe->v), free(fe->fi), free(fe->fx), free(fe->mass);
 	free(fe->sig), free(fe->ep), free(fe->Qs), free(fe->eps), free(fe->kdt);
+	free(fe->run);
 	free(fe->slab), free(fe->slab_of_k);
 	for (int i = 0; i < fe->npl; i++)
 		free(fe->pl[i].quad), free(fe->pl[i].t), free(fe->pl[i].p);
@@ -227,6 +246,7 @@ int dem_fe_create(dem_fe_t **out, const dem_mesh_t *mesh, const dem_mat_t *mat,
 		fe->sig = calloc(nblk * 6 * NB, sizeof *fe->sig);
 		fe->ep = calloc(nblk * NB, sizeof *fe->ep);
 		fe->Qs = calloc(nblk * 12 * NB, sizeof *fe->Qs);
+		fe->run = calloc(nblk, sizeof *fe->run);
 		if (o->large) {
 			fe->eps = calloc(nblk * 6 * NB, sizeof *fe->eps);
 			fe->kdt = calloc(nblk * NB, sizeof *fe->kdt);
@@ -239,7 +259,7 @@ int dem_fe_create(dem_fe_t **out, const dem_mesh_t *mesh, const dem_mat_t *mat,
 			fe->kdt = calloc(ne, sizeof *fe->kdt);
 		}
 	}
-	if (!fe->sig || !fe->ep || (o->rule == DEM_FE_1PT && !fe->Qs) ||
+	if (!fe->sig || !fe->ep || (o->rule == DEM_FE_1PT && (!fe->Qs || !fe->run)) ||
 	    (o->large && (!fe->eps || !fe->kdt)))
 		goto nomem;
 
@@ -273,6 +293,23 @@ int dem_fe_create(dem_fe_t **out, const dem_mesh_t *mesh, const dem_mat_t *mat,
 			}
 		}
 	}
+	/* blocks of NB elements in a row: their node numbers step by one */
+	if (o->rule == DEM_FE_1PT)
+		for (int s = 0; s < fe->nslab; s++) {
+			const slab_t *sl = &fe->slab[s];
+			for (size_t bl = 0; bl < sl->nb; bl++) {
+				size_t el0 = sl->e0 + bl * NB;
+				int ok = sl->e1 - el0 >= NB;
+				const uint32_t *h0 = mesh->hex + 8 * el0;
+				ok = ok && h0[1] == h0[0] + 1 && h0[2] == h0[3] + 1 &&
+				     h0[5] == h0[4] + 1 && h0[6] == h0[7] + 1;
+				for (int l = 1; ok && l < NB; l++)
+					for (int I = 0; I < 8; I++)
+						ok &= mesh->hex[8 * (el0 + (size_t)l) + I] ==
+						      mesh->hex[8 * el0 + I] + (uint32_t)l;
+				fe->run[sl->b0 + bl] = (uint8_t)ok;
+			}
+		}
 	/* padding lanes copy their block's last element */
 	if (o->rule == DEM_FE_1PT && o->large)
 		for (int s = 0; s < fe->nslab; s++) {
@@ -489,6 +526,30 @@ static inline void rotate_strain(double e[6], double a, double b, double c)
 	e[5] += 2 * c * (e0 - e2) - b * g3 + a * g4;
 }
 
+/* 4 nodes' x, y, z (12 doubles, node-major) to x[4], y[4], z[4] in place,
+ * and back */
+static inline void aos_soa(vec4 a[3])
+{
+	const lvec4 m0 = { 0, 3, 6, 7 }, m1 = { 1, 4, 7, 4 }, m2 = { 2, 5, 5, 5 };
+	const lvec4 n0 = { 0, 1, 2, 5 }, n1 = { 0, 1, 2, 6 }, n2 = { 0, 1, 4, 7 };
+	vec4 x = __builtin_shuffle(a[0], a[1], m0), y = __builtin_shuffle(a[0], a[1], m1);
+	vec4 z = __builtin_shuffle(a[0], a[1], m2);
+	a[0] = __builtin_shuffle(x, a[2], n0);
+	a[1] = __builtin_shuffle(y, a[2], n1);
+	a[2] = __builtin_shuffle(z, a[2], n2);
+}
+
+static inline void soa_aos(vec4 a[3])
+{
+	const lvec4 m0 = { 0, 4, 1, 5 }, m1 = { 1, 5, 2, 6 }, m2 = { 3, 7, 2, 6 };
+	const lvec4 n0 = { 0, 1, 4, 2 }, n1 = { 0, 1, 6, 2 }, n2 = { 6, 0, 1, 7 };
+	vec4 t = __builtin_shuffle(a[0], a[1], m0), u = __builtin_shuffle(a[1], a[2], m1);
+	vec4 w = __builtin_shuffle(a[0], a[1], m2);
+	vec4 o0 = __builtin_shuffle(t, a[2], n0), o1 = __builtin_shuffle(u, a[0], n1);
+	vec4 o2 = __builtin_shuffle(w, a[2], n2);
+	a[0] = o0, a[1] = o1, a[2] = o2;
+}
+
 static inline __attribute__((always_inline)) void slab_1pt(dem_fe_t *fe, slab_t *s, double dt, const int large, const int hg)
 {
 	const dem_mat_t *m = fe->mat;
@@ -507,6 +568,40 @@ static inline __attribute__((always_inline)) void slab_1pt(dem_fe_t *fe, slab_t 
 		const uint32_t *h[NB];
 		for (int e = 0; e < NB; e++)
 			h[e] = hex + 8 * (el0 + (size_t)(e < nv ? e : nv - 1));
+		size_t B = s->b0 + bl;
+		const int run = fe->run[B];
+		if (bl + PF < s->nb) {
+			/* the element state of a block ahead */
+			size_t Bp = B + PF;
+			for (int k = 0; k < 6 * NB; k += 8) {
+				__builtin_prefetch(fe->sig + Bp * 6 * NB + k, 1);
+				if (large)
+					__builtin_prefetch(fe->eps + Bp * 6 * NB + k, 1);
+			}
+			if (hg)
+				for (int k = 0; k < 12 * NB; k += 8)
+					__builtin_prefetch(fe->Qs + Bp * 12 * NB + k, 1);
+			__builtin_prefetch(fe->ep + Bp * NB, 1);
+			if (large)
+				__builtin_prefetch(fe->kdt + Bp * NB, 0);
+		}
+		if (run) {
+			/* nodes n..n+3: 12 consecutive doubles, transposed */
+			for (int I = 0; I < 8; I++) {
+				size_t n0 = 3 * (size_t)h[0][I];
+				vec4 X[3], V[3];
+				for (int c = 0; c < 3; c++) {
+					X[c] = *(const uvec4 *)(xs + n0 + 4 * c);
+					V[c] = *(const uvec4 *)(vs + n0 + 4 * c);
+				}
+				aos_soa(X);
+				aos_soa(V);
+				for (int c = 0; c < 3; c++) {
+					*(uvec4 *)(xb + (8 * c + I) * NB) = X[c];
+					*(uvec4 *)(vb + (8 * c + I) * NB) = V[c];
+				}
+			}
+		} else
 		/* one vector store per batch row, so that the kernel's vector
 		 * loads are forwarded from the stores (scalar stores would not) */
 		for (int I = 0; I < 8; I++) {
@@ -515,8 +610,8 @@ static inline __attribute__((always_inline)) void slab_1pt(dem_fe_t *fe, slab_t 
 			for (int c = 0; c < 3; c++) {
 				vec4 xv = { xs[n0 + c], xs[n1 + c], xs[n2 + c], xs[n3 + c] };
 				vec4 vv = { vs[n0 + c], vs[n1 + c], vs[n2 + c], vs[n3 + c] };
-				memcpy(xb + (8 * c + I) * NB, &xv, sizeof xv);
-				memcpy(vb + (8 * c + I) * NB, &vv, sizeof vv);
+				*(uvec4 *)(xb + (8 * c + I) * NB) = xv;
+				*(uvec4 *)(vb + (8 * c + I) * NB) = vv;
 			}
 		}
 		unsigned badm = dem_hex8_batch_kin(&b, xb, vb);
@@ -530,51 +625,80 @@ static inline __attribute__((always_inline)) void slab_1pt(dem_fe_t *fe, slab_t 
 				}
 			continue;
 		}
-		size_t B = s->b0 + bl;
 		double *sg = fe->sig + B * 6 * NB, *ep = fe->ep + B * NB;
 		vec4 s0[6];
-		memcpy(s0, sg, sizeof s0);
+		for (int k = 0; k < 6; k++)
+			s0[k] = *(const uvec4 *)(sg + k * NB);
 		unsigned pm = dem_mat_update_batch(m, dt, b.d[0], large ? b.w[0] : NULL, sg, ep, wp);
 		/* energies of the lanes (vector across the batch) */
 		vec4 vol, dE = { 0 }, q[12];
-		memcpy(&vol, b.vol, sizeof vol);
-		memcpy(q, b.q, sizeof q);
+		vol = *(const uvec4 *)(b.vol);
+		for (int i = 0; i < 12; i++)
+			q[i] = *(const uvec4 *)b.q[i];
 		for (int k = 0; k < 6; k++) {
 			vec4 sn, dk;
-			memcpy(&sn, sg + k * NB, sizeof sn);
-			memcpy(&dk, b.d[k], sizeof dk);
+			sn = *(const uvec4 *)(sg + k * NB);
+			dk = *(const uvec4 *)(b.d[k]);
 			dE += (s0[k] + sn) * dk;
 		}
 		dE *= 0.5 * dt * vol;
 		vec4 dP;
-		memcpy(&dP, wp, sizeof dP);
+		dP = *(const uvec4 *)(wp);
 		dP *= vol;
 		vec4 dH = { 0 };
 		if (hg) {
 			double *qs = fe->Qs + B * 12 * NB;
 			vec4 qo = { 0 }, qn = { 0 }, Pv, t;
 			for (int i = 0; i < 12; i++) {
-				memcpy(&t, qs + i * NB, sizeof t);
+				t = *(const uvec4 *)(qs + i * NB);
 				qo += t * q[i];
 			}
 			dem_hex8_batch_hg(&b, m, kaps, kapv, dt, qs, Q, P);
 			for (int i = 0; i < 12; i++) {
-				memcpy(&t, qs + i * NB, sizeof t);
+				t = *(const uvec4 *)(qs + i * NB);
 				qn += t * q[i];
 			}
-			memcpy(&Pv, P, sizeof Pv);
+			Pv = *(const uvec4 *)(P);
 			/* work of the mean of the old and new stiffness forces
 			 * (trapezoidal, like the stress work) and the viscous ones */
 			dH = dt * (Pv - 0.5 * (qn - qo));
 		}
 		dem_hex8_batch_force(&b, sg, hg ? Q : NULL, fb);
-		for (int e = 0; e < nv; e++) {
-			for (int I = 0; I < 8; I++) {
-				size_t n = 3 * (size_t)h[e][I];
-				fi[n] += fb[I * NB + e];
-				fi[n + 1] += fb[(8 + I) * NB + e];
-				fi[n + 2] += fb[(16 + I) * NB + e];
+		if (run) {
+			/* the pairs of nodes I, J = I + 1 along the row: nodes
+			 * n..n+4, each added to once (no store is read back) */
+			static const int lo[4] = { 0, 3, 4, 7 }, hi[4] = { 1, 2, 5, 6 };
+			const lvec4 sh = { 4, 0, 1, 2 };
+			const vec4 zero = { 0 };
+			for (int p = 0; p < 4; p++) {
+				size_t n0 = 3 * (size_t)h[0][lo[p]];
+				vec4 Fv[3];
+				double last[3];
+				for (int c = 0; c < 3; c++) {
+					/* element by element: the kernel stores f in
+					 * halves, a whole-vector load would not be
+					 * forwarded from them */
+					const double *p0 = fb + (8 * c + lo[p]) * NB, *p1 = fb + (8 * c + hi[p]) * NB;
+					vec4 f0 = { p0[0], p0[1], p0[2], p0[3] };
+					vec4 f1 = { p1[0], p1[1], p1[2], p1[3] };
+					Fv[c] = f0 + __builtin_shuffle(f1, zero, sh);
+					last[c] = f1[3];
+				}
+				soa_aos(Fv);
+				for (int c = 0; c < 3; c++)
+					*(uvec4 *)(fi + n0 + 4 * c) += Fv[c];
+				for (int c = 0; c < 3; c++)
+					fi[n0 + 12 + c] += last[c];
 			}
+		} else
+			for (int e = 0; e < nv; e++)
+				for (int I = 0; I < 8; I++) {
+					size_t n = 3 * (size_t)h[e][I];
+					fi[n] += fb[I * NB + e];
+					fi[n + 1] += fb[(8 + I) * NB + e];
+					fi[n + 2] += fb[(16 + I) * NB + e];
+				}
+		for (int e = 0; e < nv; e++) {
 			eint += dE[e];
 			epl += dP[e];
 			ehg += dH[e];
@@ -584,10 +708,11 @@ static inline __attribute__((always_inline)) void slab_1pt(dem_fe_t *fe, slab_t 
 			/* total strain: rotate, then add d dt; the step estimate */
 			double *es = fe->eps + B * 6 * NB, *kd = fe->kdt + B * NB;
 			vec4 E[6], d, a, bb, c;
-			memcpy(E, es, sizeof E);
-			memcpy(&a, b.w[0], sizeof a);
-			memcpy(&bb, b.w[1], sizeof bb);
-			memcpy(&c, b.w[2], sizeof c);
+			for (int k = 0; k < 6; k++)
+				E[k] = *(const uvec4 *)(es + k * NB);
+			a = *(const uvec4 *)(b.w[0]);
+			bb = *(const uvec4 *)(b.w[1]);
+			c = *(const uvec4 *)(b.w[2]);
 			a *= dt;
 			bb *= dt;
 			c *= dt;
@@ -599,21 +724,22 @@ static inline __attribute__((always_inline)) void slab_1pt(dem_fe_t *fe, slab_t 
 			F[4] = E[4] + 2 * bb * (E[2] - E[1]) - a * E[5] + c * E[3];
 			F[5] = E[5] + 2 * c * (E[0] - E[2]) - bb * E[3] + a * E[4];
 			for (int k = 0; k < 6; k++) {
-				memcpy(&d, b.d[k], sizeof d);
+				d = *(const uvec4 *)(b.d[k]);
 				F[k] += dt * d;
 			}
-			memcpy(es, F, sizeof F);
+			for (int k = 0; k < 6; k++)
+				*(uvec4 *)(es + k * NB) = F[k];
 			vec4 cm = { 0 }, kv;
 			for (int k = 1; k <= 3; k++) {
 				vec4 c0, c1, c2;
-				memcpy(&c0, b.c[k][0], sizeof c0);
-				memcpy(&c1, b.c[k][1], sizeof c1);
-				memcpy(&c2, b.c[k][2], sizeof c2);
+				c0 = *(const uvec4 *)(b.c[k][0]);
+				c1 = *(const uvec4 *)(b.c[k][1]);
+				c2 = *(const uvec4 *)(b.c[k][2]);
 				vec4 c2s = c0 * c0 + c1 * c1 + c2 * c2;
 				lvec4 gt = c2s > cm;
 				cm = (vec4)((gt & (lvec4)c2s) | (~gt & (lvec4)cm));
 			}
-			memcpy(&kv, kd, sizeof kv);
+			kv = *(const uvec4 *)(kd);
 			vec4 d2 = kv * vol * vol / cm;
 			for (int e = 0; e < NB; e++)
 				dt2 = d2[e] < dt2 ? d2[e] : dt2;
