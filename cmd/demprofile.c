@@ -21,6 +21,7 @@
 
 #include <gsl/gsl_errno.h>
 
+#include "core/afile.h"
 #include "core/cli.h"
 #include "core/cost.h"
 #include "core/fmt.h"
@@ -217,61 +218,6 @@ static int find_region(const struct settings *st, dem_state_reader_t *r,
 	return DEM_OK;
 }
 
-/* A table written atomically: a temporary name, renamed at the end. */
-struct table {
-	FILE *f;
-	char *path, *tmp;
-};
-
-static int table_open(struct table *t, const char *path, dem_error_t *e)
-{
-	size_t n = strlen(path);
-	memset(t, 0, sizeof *t);
-	if (!(t->path = strdup(path)) || !(t->tmp = malloc(n + 16)))
-		return dem_error_nomem(e, "table");
-	snprintf(t->tmp, n + 16, "%s.tmp.XXXXXX", path);
-	int fd = mkstemp(t->tmp);
-	if (fd < 0 || !(t->f = fdopen(fd, "w"))) {
-		int err = errno;
-		if (fd >= 0) {
-			close(fd);
-			unlink(t->tmp);
-		}
-		free(t->tmp);
-		t->tmp = NULL;
-		return dem_error_set(e, DEM_EIO, "%s: %s", path, strerror(err));
-	}
-	fchmod(fd, 0644);
-	return DEM_OK;
-}
-
-static void table_abort(struct table *t)
-{
-	if (t->f)
-		fclose(t->f);
-	if (t->tmp)
-		unlink(t->tmp);
-	free(t->path);
-	free(t->tmp);
-	memset(t, 0, sizeof *t);
-}
-
-static int table_close(struct table *t, dem_error_t *e)
-{
-	int bad = ferror(t->f);
-	bad |= fclose(t->f) != 0;
-	t->f = NULL;
-	if (bad || rename(t->tmp, t->path) != 0) {
-		dem_error_set(e, DEM_EIO, "%s: %s", t->path, strerror(errno ? errno : EIO));
-		table_abort(t);
-		return DEM_EIO;
-	}
-	free(t->path);
-	free(t->tmp);
-	memset(t, 0, sizeof *t);
-	return DEM_OK;
-}
-
 /* Numbers in the tables: the shortest text that reads back exactly. */
 static void put(FILE *f, double v, const char *sep)
 {
@@ -302,7 +248,7 @@ struct run {
 	int argc;
 	char **args;
 	dem_writer_t *w;
-	struct table surf, sat;
+	dem_afile_t surf, sat;   /* the tables, written atomically */
 	size_t passes, points;
 };
 
@@ -375,7 +321,7 @@ static int open_outputs(struct run *u, dem_state_reader_t *r, const dem_profile_
 	if (rc)
 		return rc;
 	if (cl->surface) {
-		if ((rc = table_open(&u->surf, cl->surface, e)))
+		if ((rc = dem_afile_open(&u->surf, cl->surface, "w", e)))
 			return rc;
 		fprintf(u->surf.f, "# demprofile surface metrics per pass (demprofile(1))\n"
 			"# region %.17g %.17g %.17g %.17g m, threshold %.17g m\n"
@@ -385,7 +331,7 @@ static int open_outputs(struct run *u, dem_state_reader_t *r, const dem_profile_
 	}
 	if (cl->saturation) {
 		const char *unit = u->st->field < 6 ? "Pa" : "-";
-		if ((rc = table_open(&u->sat, cl->saturation, e)))
+		if ((rc = dem_afile_open(&u->sat, cl->saturation, "w", e)))
 			return rc;
 		fprintf(u->sat.f, "# demprofile saturation table: %s (%s) per pass (demprofile(1))\n"
 			"# pass surface:%s peak:%s peak_depth:m zero_depth:m ep_surface:- ep_max:-\n",
@@ -572,8 +518,8 @@ int main(int argc, char **argv)
 	if ((rc = profile_stream(&run, rd, &o, &cost, &frames, &e)))
 		goto fail;
 	t = dem_wall();
-	if ((run.surf.f && (rc = table_close(&run.surf, &e))) ||
-	    (run.sat.f && (rc = table_close(&run.sat, &e))))
+	if ((run.surf.f && (rc = dem_afile_commit(&run.surf, 0, &e))) ||
+	    (run.sat.f && (rc = dem_afile_commit(&run.sat, 0, &e))))
 		goto fail;
 	rc = dem_writer_close(run.w, &e);
 	run.w = NULL;
@@ -600,8 +546,8 @@ fail:
 	if (rc == DEM_EUSAGE)
 		fprintf(stderr, "Try '%s --help' for more information.\n", PROG);
 	dem_writer_abort(run.w);
-	table_abort(&run.surf);
-	table_abort(&run.sat);
+	dem_afile_abort(&run.surf);
+	dem_afile_abort(&run.sat);
 	dem_state_reader_close(rd);
 	dem_scene_free(scene);
 	free(args);

@@ -31,6 +31,7 @@
 
 #include "contact/law.h"
 #include "contact/model.h"
+#include "core/afile.h"
 #include "core/cli.h"
 #include "core/cost.h"
 #include "fe/explicit.h"
@@ -738,9 +739,7 @@ static int ck_save(struct ckpt *ck, const dem_fe_t *fe, const struct shotin *in,
 {
 	double t0 = dem_wall();
 	ck_head_t h;
-	char *tmp;
-	FILE *f = NULL;
-	int fd, rc = DEM_OK;
+	int rc = DEM_OK;
 
 	if (fflush(ck->j) || fsync(fileno(ck->j)))
 		return dem_error_set(e, DEM_EIO, "%s: %s", ck->jpath, strerror(errno));
@@ -755,34 +754,20 @@ static int ck_save(struct ckpt *ck, const dem_fe_t *fe, const struct shotin *in,
 	h.jlen = ck->jlen;
 	h.jcrc = (uint32_t)ck->jcrc;
 	uint32_t hcrc = (uint32_t)crc32(crc32(0, Z_NULL, 0), (const Bytef *)&h, sizeof h);
-	if (!(tmp = malloc(strlen(ck->path) + sizeof ".tmpXXXXXX")))
-		return dem_error_nomem(e, "checkpoint");
-	strcpy(tmp, ck->path);
-	strcat(tmp, ".tmpXXXXXX");
-	if ((fd = mkstemp(tmp)) < 0 || !(f = fdopen(fd, "wb"))) {
-		rc = dem_error_set(e, DEM_EIO, "%s: %s", tmp, strerror(errno));
-		if (fd >= 0)
-			close(fd), remove(tmp);
-		free(tmp);
-		return rc;
-	}
-	if (fwrite(&h, sizeof h, 1, f) != 1 || fwrite(&hcrc, sizeof hcrc, 1, f) != 1)
-		rc = dem_error_set(e, DEM_EIO, "%s: write error", tmp);
+	dem_afile_t af;
+	if (dem_afile_open(&af, ck->path, "wb", e))
+		return e->code;
+	if (fwrite(&h, sizeof h, 1, af.f) != 1 || fwrite(&hcrc, sizeof hcrc, 1, af.f) != 1)
+		rc = dem_error_set(e, DEM_EIO, "%s: write error", ck->path);
 	else
-		rc = dem_fe_save(fe, f, e);
+		rc = dem_fe_save(fe, af.f, e);
 	if (!rc) {
-		long sz = ftell(f);
+		long sz = ftell(af.f);
 		ck->size = sz > 0 ? (size_t)sz : 0;
-		if (fflush(f) || fsync(fileno(f)))
-			rc = dem_error_set(e, DEM_EIO, "%s: %s", tmp, strerror(errno));
+		rc = dem_afile_commit(&af, 1, e);
+	} else {
+		dem_afile_abort(&af);
 	}
-	if (fclose(f) && !rc)
-		rc = dem_error_set(e, DEM_EIO, "%s: %s", tmp, strerror(errno));
-	if (!rc && rename(tmp, ck->path))
-		rc = dem_error_set(e, DEM_EIO, "%s: %s", ck->path, strerror(errno));
-	if (rc)
-		remove(tmp);
-	free(tmp);
 	ck->save_s += dem_wall() - t0;
 	return rc;
 }

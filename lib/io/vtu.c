@@ -1,6 +1,8 @@
 /* vtu.c - VTK XML UnstructuredGrid writer for hexahedral meshes (vtu.h). */
 #include "io/vtu.h"
 
+#include "core/afile.h"
+
 #include "core/fmt.h"
 
 #include <errno.h>
@@ -162,22 +164,10 @@ int dem_vtu_write(const char *path, const dem_mesh_t *m,
 			return dem_error_set(e, DEM_EINPUT, "vtu: element %zu: node %lu of %zu",
 					     i / 8, (unsigned long)m->hex[i], nn);
 
-	size_t len = strlen(path);
-	char *tmp = malloc(len + 16);
-	if (!tmp)
-		return dem_error_nomem(e, "vtu writer");
-	snprintf(tmp, len + 16, "%s.tmp.XXXXXX", path);
-	int fd = mkstemp(tmp);
-	if (fd < 0 || !(o.f = fdopen(fd, "w"))) {
-		int err = errno;
-		if (fd >= 0) {
-			close(fd);
-			unlink(tmp);
-		}
-		free(tmp);
-		return dem_error_set(e, DEM_EIO, "%s: %s", path, strerror(err));
-	}
-	fchmod(fd, 0644);
+	dem_afile_t af;
+	if (dem_afile_open(&af, path, "w", e))
+		return e->code;
+	o.f = af.f;
 	o.binary = binary;
 
 	fputs("<?xml version=\"1.0\"?>\n"
@@ -246,21 +236,5 @@ int dem_vtu_write(const char *path, const dem_mesh_t *m,
 	array_end(&o);
 	fputs("      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n", o.f);
 
-	int bad = ferror(o.f);
-	int err = errno;
-	if (fclose(o.f) != 0 && !bad) {
-		bad = 1;
-		err = errno;
-	}
-	if (!bad && rename(tmp, path) != 0) {
-		bad = 1;
-		err = errno;
-	}
-	if (bad) {
-		unlink(tmp);
-		free(tmp);
-		return dem_error_set(e, DEM_EIO, "%s: %s", path, strerror(err ? err : EIO));
-	}
-	free(tmp);
-	return DEM_OK;
+	return dem_afile_commit(&af, 0, e);
 }

@@ -1,0 +1,28 @@
+/* afile.h - a file written atomically: created under a temporary name
+ * beside its final path (path.tmp.XXXXXX, mode 0644) and renamed into place
+ * only when complete, so a reader never sees a half-written file and a
+ * failure leaves no file behind (DESIGN.md, "Errors"). */
+#ifndef DEM_CORE_AFILE_H
+#define DEM_CORE_AFILE_H
+
+#include <stdio.h>
+
+#include "core/error.h"
+
+typedef struct dem_afile {
+	FILE *f;                /* write here */
+	char *path, *tmp;
+} dem_afile_t;
+
+/* Create the temporary file; mode as for fdopen ("w" or "wb").  DEM_EIO
+ * naming path when it cannot be created. */
+int dem_afile_open(dem_afile_t *a, const char *path, const char *mode,
+		   dem_error_t *e);
+/* Close and rename into place (sync: fsync first, for checkpoints); on
+ * any failure the temporary file is removed and DEM_EIO names path. */
+int dem_afile_commit(dem_afile_t *a, int sync, dem_error_t *e);
+/* Give up: close and remove the temporary file.  A zeroed or already
+ * finished a is fine. */
+void dem_afile_abort(dem_afile_t *a);
+
+#endif

@@ -1,0 +1,55 @@
+/* test_afile.c - lib/core/afile: the file appears only on commit, whole;
+ * abort and failures leave nothing. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "core/afile.h"
+
+static void test_afile(void **state)
+{
+	char dir[] = "/tmp/dem-test-afile-XXXXXX", path[64], buf[16] = {0};
+	dem_afile_t a;
+	dem_error_t e = {0};
+	FILE *f;
+
+	(void)state;
+	assert_non_null(mkdtemp(dir));
+	snprintf(path, sizeof path, "%s/out", dir);
+	assert_int_equal(dem_afile_open(&a, path, "w", &e), DEM_OK);
+	fputs("hello", a.f);
+	assert_int_equal(access(path, F_OK), -1);       /* not there yet */
+	assert_int_equal(dem_afile_commit(&a, 1, &e), DEM_OK);
+	assert_non_null(f = fopen(path, "r"));
+	assert_non_null(fgets(buf, sizeof buf, f));
+	fclose(f);
+	assert_string_equal(buf, "hello");
+	/* abort leaves the old file and no temporary */
+	assert_int_equal(dem_afile_open(&a, path, "w", &e), DEM_OK);
+	fputs("other", a.f);
+	dem_afile_abort(&a);
+	assert_non_null(f = fopen(path, "r"));
+	assert_non_null(fgets(buf, sizeof buf, f));
+	fclose(f);
+	assert_string_equal(buf, "hello");
+	unlink(path);
+	assert_int_equal(rmdir(dir), 0);                /* empty: no temporary left */
+	/* a missing folder is an I/O error naming the path */
+	assert_int_equal(dem_afile_open(&a, "/nonexistent-dir/x", "w", &e), DEM_EIO);
+	assert_non_null(strstr(e.msg, "/nonexistent-dir/x"));
+	dem_afile_abort(&a);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = { cmocka_unit_test(test_afile) };
+
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
