@@ -243,19 +243,25 @@ static void alu_setup(setup_t *s, double alpha, double m)
 	assert_int_equal(dem_law_init(&s->cp.law, alpha, 68e9, m, &e), DEM_OK);
 }
 
+/* Ch. 7.5.2 (Fig. 7.16): alpha = 0.5 to 10, for the thesis's linear law
+ * and the Hertz-type law, partial contact by area (the default).  The
+ * volume factor is left out: it is not conservative on a dimpled surface
+ * (each facet's force gamma_i f(delta_i) is not the gradient of one
+ * potential); measured here it gains up to 3 % of the input at alpha 0.5
+ * (m = 1.5), 0.4 % at alpha 2. */
 static void test_alpha(void **state)
 {
 	(void)state;
-	static const double alpha[] = { 0.5, 1, 2, 5, 10 };
-	for (int m = 0; m < 1; m++)
+	static const double alpha[] = { 0.5, 1, 2, 5, 10 }, law_m[] = { 1, 1.5 };
+	for (int l = 0; l < 2; l++)
 		for (int i = 0; i < 5; i++) {
 			setup_t s;
 			result_t r;
-			alu_setup(&s, alpha[i], 1.5);
-			s.cp.partial = m ? DEM_PARTIAL_VOLUME : DEM_PARTIAL_AREA;
+			alu_setup(&s, alpha[i], law_m[l]);
+			s.cp.partial = DEM_PARTIAL_AREA;
 			run(&s, &r);
-			printf("# alpha %g %s: Fmax %.4g N, E max/start %.5f, end/start %.4f, "
-			       "exit vz %.3g m/s, %ld steps\n", alpha[i], m ? "volume" : "area", r.Fmax,
+			printf("# alpha %g, m = %g: Fmax %.4g N, E max/start %.5f, end/start %.4f, "
+			       "exit vz %.3g m/s, %ld steps\n", alpha[i], law_m[l], r.Fmax,
 			       r.Emax / r.E0, r.Eend / r.E0, r.v[0][2], r.steps);
 			assert_int_equal(r.rc, DEM_OK);
 			assert_true(r.Emax <= 1.01 * r.E0);
