@@ -35,16 +35,17 @@
  * the elastic part of the normal force do, over a whole contact, exactly
  * the work its law prescribes:
  *
- *   - Central differences change the velocities by F h_n / M with the
- *     velocity step h_n = (dt_{n-1} + dt_n) / 2 (Box 3.1), so the kinetic
- *     energy of the two bodies changes exactly by
- *         M/2 (v_{n+1/2}^2 - v_{n-1/2}^2) = F_n h_n n_n . (w_{n-1/2} + w_{n+1/2}) / 2
- *     for the pair force F_n n_n (w: relative velocity, contactor minus
- *     target).  This is linear in F: the elastic part F_e (k_n delta^m,
- *     or the branch of Eq. 3.63 with hysteresis; gamma included) does the
- *     discrete work W_h = sum over the contact of that expression with F_e.
- *     With several contacts on a body, or damping, the shares add up to
- *     the whole change.
+ *   - Central differences change a velocity by F h_n / M with the
+ *     velocity step h_n = (dt_{n-1} + dt_n) / 2 (Box 3.1), so a body's
+ *     kinetic energy changes exactly by M/2 (v_{n+1/2}^2 - v_{n-1/2}^2) =
+ *     F h_n . (v_{n-1/2} + v_{n+1/2}) / 2, and that of the two bodies of a
+ *     pair force F_n n_n (on the contactor; minus on the target) by
+ *         F_n h_n n_n . (w_{n-1/2} + w_{n+1/2}) / 2
+ *     (w: relative velocity, contactor minus target).  This is linear in
+ *     F: the elastic part F_e (k_n delta^m, or the branch of Eq. 3.63 with
+ *     hysteresis; gamma included) does the discrete work W_h = sum over the
+ *     contact of that expression with F_e.  With several contacts on a
+ *     body, or damping, the shares add up to the whole change.
  *   - The exact work of F_e from delta = 0 to delta = 0 is - integral F_e
  *     d delta: U(0) - U(0) = 0 for the power law; for the hysteretic model
  *     (Eqs. 3.63-3.64) minus the area of the loop closed at the largest
@@ -72,11 +73,14 @@
  * DEM_SEPFIX_ON = 0) and the driver applies it to its rigid pairs.
  *
  * Use in a driver, per pair and step (h = (dt_prev + dt) / 2, the velocity
- * step the driver applies to the force):
+ * step the driver applies to the force; w the relative velocity at the
+ * contact, for spheres that of the centres: the normal force does no work
+ * on the spins):
  *   in contact, after cm->kernel:  dem_sepfix_record(st, n, w, o.Fe, h)
- *     with n, w the kernel's normal and relative velocity (w = v_{n-1/2});
- *   on the first step apart (delta <= 0), before resetting the state:
- *     dem_sepfix_release(cm, st, kn, meff, n, w, J) with the current
+ *     with the kernel's normal n and w = w_{n-1/2}, before the update;
+ *   on the first step apart (delta <= 0), with the state as it was before
+ *     the pair function reset it (keep a copy):
+ *     dem_sepfix_release(cm, &copy, kn, meff, n, w, J) with the current
  *     normal and relative velocity; add J to the contactor's momentum and
  *     -J to the target's (or the forces J / h and -J / h this step).
  * dem_contact_wall_test below is such a driver (the rigid sphere and wall

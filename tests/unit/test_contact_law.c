@@ -266,6 +266,52 @@ static void test_sepfix_sweep(void **state)
 	assert_int_equal(dem_contact_model_init(&off, &p, &e), DEM_EINPUT);
 }
 
+/* The pieces of the correction on hand-computed numbers: the tally (half
+ * steps), the exact work of the hysteresis loop, the impulse, and its
+ * limits (no reversal, nothing when not separating). */
+static void test_sepfix_pieces(void **state)
+{
+	(void)state;
+	dem_contact_param_t p = { .law = { .m = 1.5, .coef = 1 } };
+	dem_contact_model_t cm;
+	model(&cm, &p);
+	dem_contact_state_t s;
+	dem_contact_state_reset(&s);
+	const double n[3] = { 0, 0, 1 }, w1[3] = { 5, 0, -2 }, w2[3] = { 5, 1, -1 }, w3[3] = { 0, 0, 3 };
+	/* F_e = 3 with h = 0.5 at w1, then F_e = 4 with h = 0.25 at w2 */
+	dem_sepfix_record(&s, n, w1, 3, 0.5);
+	assert_true(fabs(s.W - 0.5 * 1.5 * -2) < 1e-15 && s.P[2] == 1.5);
+	dem_sepfix_record(&s, n, w2, 4, 0.25);
+	assert_true(fabs(s.W - (-1.5 + 0.5 * (1.5 * -1 + 1 * -1))) < 1e-15 && s.P[2] == 1);
+	/* closed with w3: W_h = -2.75 + 1.5 = -1.25; power law: E = W_h */
+	assert_true(fabs(dem_sepfix_error(&cm, &s, 7, w3) + 1.25) < 1e-15);
+	double J[3];
+	/* meff = 2: w_n' = sqrt(9 + 1.25) */
+	double got = dem_sepfix_release(&cm, &s, 7, 2, n, w3, J);
+	assert_true(fabs(got + 1.25) < 1e-14);
+	assert_true(J[0] == 0 && J[1] == 0 && fabs(J[2] - 2 * (sqrt(10.25) - 3)) < 1e-14);
+	/* more energy made than the normal motion has: stopped, not reversed */
+	s.W = 20, s.P[2] = 0;
+	got = dem_sepfix_release(&cm, &s, 7, 2, n, w3, J);
+	assert_true(fabs(J[2] + 6) < 1e-14 && fabs(got - 9) < 1e-14);
+	/* not separating: nothing */
+	const double w4[3] = { 1, 0, -0.5 };
+	assert_true(dem_sepfix_release(&cm, &s, 7, 2, n, w4, J) == 0 && J[2] == 0);
+	/* hysteresis: the exact work is minus the loop at dmax */
+	p.damping = DEM_DAMP_HYSTERESIS;
+	p.unload = 4;
+	model(&cm, &p);
+	dem_contact_state_reset(&s);
+	s.dmax = 0.5;
+	double D = 7 * pow(0.5, 2.5) / 2.5 * (1 - pow(0.25, 1 / 1.5));
+	assert_true(fabs(dem_sepfix_error(&cm, &s, 7, w3) - D) < 1e-14);
+	s.W = -D;
+	assert_true(fabs(dem_sepfix_error(&cm, &s, 7, w3)) < 1e-14);
+	/* a fresh state: nothing to do */
+	dem_contact_state_reset(&s);
+	assert_true(dem_sepfix_release(&cm, &s, 7, 2, n, w3, J) == 0 && J[2] == 0);
+}
+
 /* Hysteresis (Eqs. 3.63-3.67) with the correction: the exact work is minus
  * the loop closed at the largest overlap reached, so the sphere leaves
  * with the closed-form restitution for that overlap. */
@@ -403,6 +449,7 @@ int main(void)
 		cmocka_unit_test(test_lambda_check),
 		cmocka_unit_test(test_box31_sweep),
 		cmocka_unit_test(test_model_dt),
+		cmocka_unit_test(test_sepfix_pieces),
 		cmocka_unit_test(test_sepfix_sweep),
 		cmocka_unit_test(test_sepfix_hysteresis),
 		cmocka_unit_test(test_sepfix_viscous),
