@@ -128,7 +128,10 @@ dem_lambda_status_t dem_dt_lambda_check(double lambda, int force, char *msg, siz
 /* The rigid-sphere/rigid-wall test of Box 3.1: central differences with
  * dt_n = lambda dt_cr(u_n) (Eqs. 3.80-3.83, u_max by Eq. 3.81), u(0) = 0,
  * impact speed v0, until the sphere leaves.  Returns v_exit / v0 (NaN only
- * for bad arguments); steps and the largest overlap (NULL for none). */
+ * for bad arguments); steps and the largest overlap (NULL for none).  The
+ * thesis scheme; dem_contact_wall_test (model.h) runs the same through a
+ * contact model, with the separation correction that removes the energy
+ * this scheme makes or loses. */
 double dem_dt_wall_test(double m, double kn, double M, double v0, double lambda,
                         long *steps, double *umax_reached);
 

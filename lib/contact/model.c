@@ -116,6 +116,7 @@ kernel(const dem_contact_model_t *cm, const dem_contact_kin_t *k, dem_contact_st
 	} else {
 		F = kn * dm;
 	}
+	o->Fe = F * g;  /* the elastic part, for the separation correction */
 	/* tangent stiffness K_n = m k_n delta^(m-1) (Eq. 3.72) */
 	double Kn = 0;
 	if (damp == DEM_DAMP_VISCOUS || fric)
@@ -189,7 +190,13 @@ int dem_contact_model_init(dem_contact_model_t *cm, const dem_contact_param_t *p
 	if (p->damping == DEM_DAMP_HYSTERESIS) {
 		cm->shift = 1 - pow(1 / p->unload, 1 / m);           /* Eq. 3.64 */
 		cm->dt_factor = pow(p->unload, 1 / m);
+		/* the loop: loading area k dmax^(m+1)/(m+1) minus the unloading
+		 * area k' (dmax - delta_0)^(m+1)/(m+1) = (k/k')^(1/m) times it */
+		cm->loop = cm->shift / (m + 1);
 	}
+	if (p->sepfix != DEM_SEPFIX_ON && p->sepfix != DEM_SEPFIX_OFF)
+		return dem_error_set(e, DEM_EINPUT, "contact model: unknown separation correction setting %d", p->sepfix);
+	cm->sepfix = p->sepfix == DEM_SEPFIX_ON;
 	int law = m == 1.0 ? LAW_1 : m == 1.5 ? LAW_15 : m == 2.0 ? LAW_2 : LAW_GEN;
 	cm->kernel = kernels[law][p->damping][p->friction ? 1 : 0];
 
@@ -213,4 +220,102 @@ double dem_contact_dt(const dem_contact_model_t *cm, double kn, double M, double
 	double umax = dem_dt_umax_state(cm->m, kn, M, u, vn);
 	double K = dem_dt_secant(cm->m, kn, umax, u) * cm->dt_factor;
 	return dem_dt_step(lambda, M, K);
+}
+
+/* ---- Separation correction (beyond the thesis; see model.h) ------------ */
+
+void dem_sepfix_record(dem_contact_state_t *s, const double n[3], const double w[3], double Fe,
+                       double h)
+{
+	double P[3] = { Fe * h * n[0], Fe * h * n[1], Fe * h * n[2] };
+	/* F h n . (w_{n-1/2} + w_{n+1/2}) / 2: the previous step's second half
+	 * and this step's first half */
+	s->W += 0.5 * (v3_dot(s->P, w) + v3_dot(P, w));
+	for (int i = 0; i < 3; i++)
+		s->P[i] = P[i];
+}
+
+double dem_sepfix_error(const dem_contact_model_t *cm, const dem_contact_state_t *s, double kn,
+                        const double w[3])
+{
+	double Wh = s->W + 0.5 * v3_dot(s->P, w);
+	double Wx = 0;  /* U(0) - U(0) for the power law */
+	if (cm->p.damping == DEM_DAMP_HYSTERESIS && s->dmax > 0)
+		Wx = -cm->loop * kn * pow(s->dmax, cm->m + 1);  /* the loop of Eqs. 3.63-3.64 */
+	return Wh - Wx;
+}
+
+double dem_sepfix_release(const dem_contact_model_t *cm, const dem_contact_state_t *s, double kn,
+                          double meff, const double n[3], const double w[3], double J[3])
+{
+	J[0] = J[1] = J[2] = 0;
+	double E = dem_sepfix_error(cm, s, kn, w);
+	double wn = v3_dot(n, w);
+	if (!(wn > 0) || E == 0 || !isfinite(E) || !(meff > 0))
+		return 0;
+	double w2 = wn * wn - 2 * E / meff;
+	double wn1 = w2 > 0 ? sqrt(w2) : 0;  /* never reversed */
+	double j = meff * (wn1 - wn);
+	for (int i = 0; i < 3; i++)
+		J[i] = j * n[i];
+	return 0.5 * meff * (wn * wn - wn1 * wn1);
+}
+
+/* ---- The rigid sphere/rigid wall test ---------------------------------- */
+
+int dem_contact_wall_test(const dem_contact_model_t *cm, double kn, double M, double v0,
+                          double lambda, int step, dem_wall_run_t *r, dem_error_t *e)
+{
+	memset(r, 0, sizeof *r);
+	if (!(kn > 0 && M > 0 && v0 > 0 && lambda > 0) || !isfinite(kn) || !isfinite(M) || !isfinite(v0)
+	    || (step != DEM_WALL_STEP_IMPACT && step != DEM_WALL_STEP_STATE))
+		return dem_error_set(e, DEM_EINPUT, "wall test: expected k_n, M, v0, lambda > 0 and a step rule "
+		                     "(got %g, %g, %g, %g, %d)", kn, M, v0, lambda, step);
+	const double m = cm->m;
+	const double umax = dem_dt_umax(m, kn, M, v0);  /* Eq. 3.81 */
+	dem_contact_state_t st;
+	dem_contact_state_reset(&st);
+	/* Box 3.1: u_n, v_{n-1/2} (= du/dt), dt_{n-1}; the wall's normal n = +z
+	 * points to the sphere, whose velocity is -v along it */
+	double u = 0, v = v0, dtp = 0, t = 0;
+	const double nz[3] = { 0, 0, 1 };
+	for (long k = 0;; k++) {
+		double dt = step == DEM_WALL_STEP_IMPACT
+		            ? lambda * 2 * sqrt(M / (dem_dt_secant(m, kn, umax, u) * cm->dt_factor))
+		            : dem_contact_dt(cm, kn, M, u, v, lambda);
+		double h = (dtp + dt) / 2, F = 0;
+		if (u > 0) {
+			dem_contact_kin_t kin = { .delta = u, .gamma = 1, .n = { 0, 0, 1 }, .vrel = { 0, 0, -v },
+			                          .kn = kn, .meff = M, .dt = dt };
+			dem_contact_out_t o;
+			cm->kernel(cm, &kin, &st, &o);
+			F = o.Fn;
+			if (cm->sepfix)
+				dem_sepfix_record(&st, nz, kin.vrel, o.Fe, h);
+		}
+		r->Fmax = fmax(r->Fmax, F);
+		double a = -F / M;
+		v += a * (dtp + dt) / 2;
+		double un = u + v * dt;
+		r->steps++;
+		if (un < 0 && v < 0) {
+			/* left during this step: u is linear in it */
+			r->tc = t + u / -v;
+			break;
+		}
+		u = un;
+		r->umax = fmax(r->umax, u);
+		t += dt;
+		dtp = dt;
+		if (!isfinite(u) || !isfinite(v) || k > 100000000L)
+			return dem_error_set(e, DEM_ENUMERIC, "wall test: the sphere did not leave (m = %g, lambda = %g)",
+			                     m, lambda);
+	}
+	r->ratio0 = r->ratio = -v / v0;
+	if (cm->sepfix) {
+		double J[3], w[3] = { 0, 0, -v };
+		r->dE = dem_sepfix_release(cm, &st, kn, M, nz, w, J);
+		r->ratio = (-v + J[2] / M) / v0;
+	}
+	return DEM_OK;
 }
