@@ -80,7 +80,7 @@ check: deps
 
 demo: deps
 	@$(MAKE) --no-print-directory build
-	@$(MAKE) --no-print-directory -C examples/detect-bench demo
+	@$(MAKE) --no-print-directory -C examples/demo
 
 bench: all
 	@$(MAKE) --no-print-directory -C examples/detect-bench
