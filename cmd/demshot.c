@@ -387,8 +387,9 @@ static void log_effects(const struct settings *st)
 		fprintf(stderr, ", damping %g of critical", st->xi);
 	fprintf(stderr, "%s", st->have_load ? ", pressure load" : "");
 	if (st->have_shots)
-		fprintf(stderr, ", shots: contact %s, sphere/sphere, lambda %g",
-			st->cm.effects, st->so.lambda);
+		fprintf(stderr, ", shots: contact %s, sphere/sphere%s, lambda %g",
+			st->cm.effects, st->cm.sepfix ? " (separation correction)" : "",
+			st->so.lambda);
 	fputc('\n', stderr);
 }
 

@@ -686,7 +686,7 @@ int dem_shotset_hook(void *ctx, double t, double dt, const double *x, const doub
 	for (size_t s = 0; s < ns; s++)
 		ncont += S->b[s].contacts;
 	/* sphere/sphere (Eq. 3.8 in 3D), in order */
-	double spc = 0;
+	double spc = 0, h = 0.5 * (S->dt_prev + dt);
 	for (size_t k = 0; k < S->nsp; k++) {
 		dem_shot_body_t *b1 = &S->b[S->sp[k][0]], *b2 = &S->b[S->sp[k][1]];
 		dem_sphere_t s1 = { .R = b1->R, .kn = b1->kn }, s2 = { .R = b2->R, .kn = b2->kn };
@@ -695,8 +695,36 @@ int dem_shotset_hook(void *ctx, double t, double dt, const double *x, const doub
 		double kn = dem_law_kn(&S->cm.p.law, dem_law_reff(b1->R, b2->R));
 		double meff = dem_contact_meff(b1->M, b2->M);
 		dem_pair_out_t o;
-		if (!dem_contact_sphere_sphere(&S->cm, &s1, &s2, kn, meff, dt, &S->ss[k], &o))
+		/* the separation correction (contact/model.h): the pair's work
+		 * tally is recorded while in contact, and closed, from the
+		 * state as it was, on the first step apart */
+		const int fix = S->cm.sepfix;
+		dem_contact_state_t keep;
+		double w[3];
+		if (fix)
+			keep = S->ss[k];
+		for (int i = 0; i < 3; i++)
+			w[i] = b2->v[i] - b1->v[i];
+		if (!dem_contact_sphere_sphere(&S->cm, &s1, &s2, kn, meff, dt, &S->ss[k], &o)) {
+			double d[3], J[3], l = 0;
+			if (!fix)
+				continue;
+			for (int i = 0; i < 3; i++)
+				d[i] = b2->x[i] - b1->x[i], l += d[i] * d[i];
+			if (!(l > 0))
+				continue;
+			l = sqrt(l);
+			for (int i = 0; i < 3; i++)
+				d[i] /= l;
+			S->st.sepfix_J += dem_sepfix_release(&S->cm, &keep, kn, meff, d, w, J);
+			for (int i = 0; i < 3; i++) {
+				b2->F[i] += J[i] / h;
+				b1->F[i] -= J[i] / h;
+			}
 			continue;
+		}
+		if (fix)
+			dem_sepfix_record(&S->ss[k], o.n, w, o.c.Fe, h);
 		spc++;
 		double *T1 = T[S->sp[k][0]], *T2 = T[S->sp[k][1]];
 		for (int i = 0; i < 3; i++) {

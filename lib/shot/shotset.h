@@ -91,6 +91,8 @@ typedef struct dem_shotset_stats {
 	double contacts;          /* sphere/facet pairs in contact, summed over steps */
 	double sphere_contacts;   /* sphere/sphere pairs in contact, summed */
 	double detect_s, contact_s, integrate_s;  /* wall seconds */
+	double sepfix_J;          /* energy the separation correction took from shot
+				   * pairs (J; < 0: gave back) */
 } dem_shotset_stats_t;
 
 typedef struct dem_shotset dem_shotset_t;

@@ -193,7 +193,7 @@ YAML
 	run --separate-stderr demshot -s "$T/shot.yaml" --forces "$T/f.txt" -o "$T/s.state" "$T/s2.txt"
 	echo "$stderr"
 	[ "$status" -eq 0 ]
-	grep -q "shots: contact law m=1.5, partial area, sphere/sphere, lambda 0.2" <<< "$stderr"
+	grep -q "shots: contact law m=1.5, partial area, sphere/sphere (separation correction), lambda 0.2" <<< "$stderr"
 	grep -q "time: elements .*%, contact (law m=1.5, partial area) .*%" <<< "$stderr"
 	[[ ${stderr_lines[-1]} =~ ^demshot:\ cost:\ .*\ passes=2\ .*contacts=[1-9] ]]
 	# the frames carry the stream's passes 0 and 1, and its impact area
