@@ -37,6 +37,25 @@ static const char *const known_sections[] = {
 	"load", "profile", "form", "plate", "output", "meta", NULL
 };
 
+static int in_list(const char *const *list, const char *name)
+{
+	for (; list && *list; list++)
+		if (strcmp(*list, name) == 0)
+			return 1;
+	return 0;
+}
+
+/* Keys of a section that two programs of one pipeline read, each its own
+ * part: the shot section gives dempack the stream (radius ... azimuth) and
+ * demshot the bodies (density, gap, buffer).  The check of one program
+ * lets the other's keys pass; that program checks their values. */
+static const char *const shared_keys[] = {
+	"shot.radius", "shot.law", "shot.lambda", "shot.speed", "shot.speed_scatter",
+	"shot.angle", "shot.azimuth",              /* dempack shots */
+	"shot.density", "shot.gap", "shot.buffer",  /* demshot */
+	NULL
+};
+
 enum node_kind { NODE_SCALAR, NODE_SEQ, NODE_MAP };
 
 struct node;
@@ -1451,7 +1470,7 @@ static int check_map(const dem_scene_t *s, const struct node *map,
 		full = xasprintf("%s.%s", prefix, en->key);
 		if (!full)
 			return dem_error_nomem(e, "scene check");
-		if (asked(s, full))
+		if (asked(s, full) || (in_list(shared_keys, full) && en->val->kind == NODE_SCALAR))
 			code = DEM_OK;
 		else if ((en->val->kind == NODE_MAP || node_is_null(en->val)) &&
 			 asked_below(s, full))
@@ -1461,14 +1480,6 @@ static int check_map(const dem_scene_t *s, const struct node *map,
 		free(full);
 	}
 	return code;
-}
-
-static int in_list(const char *const *list, const char *name)
-{
-	for (; list && *list; list++)
-		if (strcmp(*list, name) == 0)
-			return 1;
-	return 0;
 }
 
 static int unknown_section(const dem_scene_t *s, const struct entry *en,

@@ -350,3 +350,32 @@ ckpt_setup() {
 	usage_error demshot -s "$T/pulse.yaml" --resume
 	usage_error demshot -s "$T/pulse.yaml" --checkpoint "$T/ck"
 }
+
+@test "demshot/dempack: one shot section serves both programs, each checks its own keys, a typo is refused by both" {
+	cat > "$T/both.yaml" <<'YAML'
+material: {E: 68 GPa, nu: 0.33, rho: 2700 kg/m^3, yield: 157 MPa, hardening: 120 MPa}
+block: {size: [1 mm, 1 mm, 0.5 mm], element: 0.1 mm}
+run: {pass_time: 1 us}
+shot:
+  radius: 0.25 mm
+  speed: 19 m/s
+  density: 7800 kg/m^3
+YAML
+	dempack -s "$T/both.yaml" shots --grid 1 --passes 1 > "$T/s1.txt" 2>/dev/null
+	run --separate-stderr demshot -s "$T/both.yaml" -q -o "$T/b.state" "$T/s1.txt"
+	[ "$status" -eq 0 ]
+	grep -v '^#' "$T/s1.txt" | awk '{ exit !($5 == 0.00025 && $8 == -19) }'
+	# a value of the other program's key is that program's to check
+	sed 's/density: 7800 kg\/m^3/density: -1 kg\/m^3/' "$T/both.yaml" > "$T/neg.yaml"
+	dempack -s "$T/neg.yaml" shots --grid 1 --passes 1 > /dev/null 2>&1
+	run --separate-stderr demshot -s "$T/neg.yaml" -q -o "$T/n.state" "$T/s1.txt"
+	[ "$status" -eq 1 ]
+	grep -q "shot.density" <<< "$stderr"
+	printf '  densty: 1\n' >> "$T/both.yaml"
+	run --separate-stderr dempack -s "$T/both.yaml" shots --grid 1
+	[ "$status" -eq 1 ]
+	grep -q "unknown key 'shot.densty'" <<< "$stderr"
+	run --separate-stderr demshot -s "$T/both.yaml" -q -o "$T/c.state" "$T/s1.txt"
+	[ "$status" -eq 1 ]
+	grep -q "unknown key 'shot.densty'" <<< "$stderr"
+}

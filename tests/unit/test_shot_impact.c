@@ -6,13 +6,13 @@
  *  - Hertz impact of a rigid sphere on an elastic half-space (DESIGN.md,
  *    "Verification references"): indentation d = (15 M v^2 / (16 E*
  *    sqrt(R)))^(2/5), largest force (4/3) E* sqrt(R) d^(3/2), contact time
- *    2.94 d / v.  The block stands for the half-space: 20 contact radii
+ *    2.94327 d / v.  The block stands for the half-space: 20 contact radii
  *    thick, 20 wide, v / c = 1/700 (quasi-static).  What the finite block
  *    changes: its rigid base stiffens it by about Boussinesq's displacement
  *    at depth H under the load, 0.73 a / H of the indentation for nu = 0.3,
  *    3.6 % here, worth about 1.5 % on the force and contact time.  The
- *    coarse mesh here puts 4 elements on the contact radius a; we allow
- *    12 % (the full case, 10 elements on a, 5 %, belongs in examples/hertz).
+ *    coarse mesh here puts 4 elements on the contact radius a; the bound is
+ *    the 5 % of the full case (10 elements on a, examples/hertz).
  *  - energy: the shots' kinetic energy plus the block's kinetic, internal,
  *    hourglass and damping energies never exceed the shots' initial
  *    kinetic energy by more than 1 % (no blow-up), for the linear law with
@@ -196,13 +196,14 @@ static void test_hertz(void **state)
 	const double Es = E / (1 - nu * nu);
 	/* the shot's mass for that indentation: M = 16 E* sqrt(R) d^(5/2) / (15 v^2) */
 	const double M = 16 * Es * sqrt(R) * pow(d, 2.5) / (15 * v * v);
-	/* a stiff penalty, F = alpha E sqrt(R) delta^1.5 with alpha = 30: in
-	 * series with the block's Hertz law k_H = 4/3 E* sqrt(R), the pair acts
-	 * as one Hertz law k_H (1 + r)^(-3/2), r = (k_H / k_pen)^(2/3) (the
-	 * overlaps add at equal force); force and contact time scale as
-	 * k^(2/5) and k^(-2/5): the reference is Hertz's times (1 + r)^(-3/5)
-	 * and (1 + r)^(3/5) (7 %).  Bound: 12 %, the coarse mesh (a = 4 h)
-	 * and the finite block (above) */
+	/* a stiff penalty, F = alpha E sqrt(R) delta^1.5 with alpha = 30.  In
+	 * this conforming contact (the surface takes the sphere's shape) each
+	 * of the ~100 facets under the sphere carries the law on its own small
+	 * overlap, so the penalty is far stiffer than one Hertz law in series
+	 * with the block: its compliance is small (alpha 20 gives -1 % on the
+	 * force against alpha 30), and the reference is Hertz's.  Bound 5 %
+	 * (issue 5, item 1, there with 10 elements on a: examples/hertz, which
+	 * measured +0.4 % on the force and +0.8 % on the contact time). */
 	const double alpha = getenv("HALPHA") ? atof(getenv("HALPHA")) : 30;
 	setup_t s = { .L = 10 * a, .H = 20 * a, .Lf = 2 * a, .Hf = 2 * a, .h = h, .ratio = 1.3,
 		      .mat = { .E = E, .nu = nu, .rho = rho },
@@ -214,17 +215,15 @@ static void test_hertz(void **state)
 		s.cp.partial = DEM_PARTIAL_VOLUME;
 	result_t r;
 	run(&s, &r);
-	double rr = pow(4.0 / 3.0 * Es / (alpha * E), 2.0 / 3.0);
-	double FH = 4.0 / 3.0 * Es * sqrt(R) * pow(d, 1.5), tH = 2.94 * d / v;
-	double F = FH * pow(1 + rr, -0.6), tc = tH * pow(1 + rr, 0.6);
+	/* contact time 2 d / v int_0^1 dx / sqrt(1 - x^(5/2)) = 2.94327 d / v */
+	double F = 4.0 / 3.0 * Es * sqrt(R) * pow(d, 1.5), tc = 2.94327 * d / v;
 	double T = r.t_last - r.t_first;
-	printf("# hertz: Fmax %.6g N (Hertz %.6g, with the penalty %.6g: %+.2f %%), contact %.6g s "
-	       "(Hertz %.6g, with the penalty %.6g: %+.2f %%), %ld steps, E end/start %.5f\n",
-	       r.Fmax, FH, F, 100 * (r.Fmax / F - 1), T, tH, tc, 100 * (T / tc - 1), r.steps,
-	       r.Eend / r.E0);
+	printf("# hertz: Fmax %.6g N (Hertz %.6g: %+.2f %%), contact %.6g s (Hertz %.6g: %+.2f %%), "
+	       "%ld steps, E end/start %.5f\n", r.Fmax, F, 100 * (r.Fmax / F - 1), T, tc,
+	       100 * (T / tc - 1), r.steps, r.Eend / r.E0);
 	assert_int_equal(r.rc, DEM_OK);
-	assert_true(fabs(r.Fmax / F - 1) < 0.12);
-	assert_true(fabs(T / tc - 1) < 0.12);
+	assert_true(fabs(r.Fmax / F - 1) < 0.05);
+	assert_true(fabs(T / tc - 1) < 0.05);
 	assert_true(r.Emax <= 1.01 * r.E0);
 	free(r.u);
 }
