@@ -315,6 +315,25 @@ typedef struct span {
  * axis_ok in dcell_impl.h). */
 enum { AX_ANY, AX_ABOVE, AX_BELOW };
 
+/* The 3D near sweep has an AVX2 twin (dcell_sweep.h), built with GCC on
+ * x86-64 and chosen at run time when the processor has AVX2 (DEM_NO_AVX2
+ * in the environment forces the portable one, for comparisons). */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define DCELL_X86_AVX2 1
+#include <immintrin.h>
+static int have_avx2(void)
+{
+	static int have = -1;
+	if (have < 0) {
+		__builtin_cpu_init();
+		have = __builtin_cpu_supports("avx2") && !getenv("DEM_NO_AVX2");
+	}
+	return have;
+}
+#else
+#define DCELL_X86_AVX2 0
+#endif
+
 /* An item of a slab, row or cell list of the list sweep: a box (index into
  * the sorted box array) and its migrated bits. */
 typedef struct item {

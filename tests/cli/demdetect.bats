@@ -736,3 +736,13 @@ demdetect" ]
 	done
 	usage_error demdetect --repeat 0 "$T/p2"
 }
+
+@test "demdetect: the AVX2 and the portable 3D sweep give the same pairs as brute force" {
+	dempack random --dim 3 -n 20000 --density 0.6 --lambda 3 --seed 9 -b > "$T/s.bin" 2>/dev/null
+	a=$(demdetect -c "$T/s.bin" 2>/dev/null)
+	b=$(DEM_NO_AVX2=1 demdetect -c "$T/s.bin" 2>/dev/null)
+	c=$(demdetect -a brute -c "$T/s.bin" 2>/dev/null)
+	echo "avx2 $a portable $b brute $c"
+	[ "$c" -gt 0 ] && [ "$a" = "$c" ] && [ "$b" = "$c" ]
+	cmp <(demdetect "$T/s.bin" 2>/dev/null | grep -v '^# prog') <(DEM_NO_AVX2=1 demdetect "$T/s.bin" 2>/dev/null | grep -v '^# prog')
+}
