@@ -8,7 +8,7 @@ png=$1 title=$2 fields=$3
 shift 3
 n=$(echo "$fields" | tr ',' '\n' | wc -l)
 {
-	echo "set terminal pngcairo size $((560 * n)),480 font ',10'"
+	echo "set terminal pngcairo size $((560 * n)),480 font ',10' noenhanced"
 	echo "set output '$png'"
 	echo "set multiplot layout 1,$n title \"$title\""
 	echo "set grid; set key bottom right; set xzeroaxis lt -1"

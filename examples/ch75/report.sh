@@ -12,10 +12,11 @@ echo "Measured $(date '+%F') on $(nproc) cores (load average at the end: $(cut -
 echo "Stresses in MPa at the impact point (single shot: the 2 x 2 elements meeting there) or"
 echo "averaged over the 4 x 4 mm impact area (multi); depths in mm; e: coefficient of restitution."
 echo
-echo "| run | elements | surface sxx | peak sxx | at depth | zero crossing | peak szz | e | wall s |"
-echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|"
+echo "| run | elements | surface sxx | peak sxx | at depth | zero crossing | peak szz | e | wall s | cpu s |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 for r in "$out"/*.row; do
-	awk -F'\t' '{ printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", $1, $8, $9, $10, $11, $12, $13, $14, $15 }' "$r"
+	cpu=$(grep '^demshot: cost' "${r%.row}.log" | sed 's/.* cpu_s=\([0-9.]*\).*/\1/')
+	awk -F'\t' -v cpu="$cpu" '{ printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", $1, $8, $9, $10, $11, $12, $13, $14, $15, cpu }' "$r"
 done
 echo
 echo "## Element size (Fig. 7.18): against h = $finest mm"
