@@ -126,6 +126,7 @@ void dem_fe_opts_default(dem_fe_opts_t *o)
 	o->damping = 0;
 	o->hg_stiff = 0.1;
 	o->hg_visc = 0;
+	o->hg_tangent = 1;
 }
 
 double dem_fe_damping_alpha(const dem_mat_t *m, double xi, double H)
@@ -653,7 +654,22 @@ static inline __attribute__((always_inline)) void slab_1pt(dem_fe_t *fe, slab_t 
 				t = *(const uvec4 *)(qs + i * NB);
 				qo += t * q[i];
 			}
-			dem_hex8_batch_hg(&b, m, kaps, kapv, dt, qs, Q, P);
+			/* in elements that flow this step, the stiffness form
+			 * grows with the material's tangent, not its elastic
+			 * modulus (see dem_fe_opts_t.hg_tangent) */
+			double ksc[NB], *kp = NULL;
+			if (pm && fe->o.hg_tangent) {
+				const double *epl = fe->ep + B * NB;
+				for (int e = 0; e < NB; e++) {
+					ksc[e] = 1;
+					if (pm >> e & 1) {
+						double H = dem_mat_hardening_slope(m, epl[e]);
+						ksc[e] = H > 0 ? H / (3 * m->G + H) : 0;
+					}
+				}
+				kp = ksc;
+			}
+			dem_hex8_batch_hg(&b, m, kaps, kapv, dt, kp, qs, Q, P);
 			for (int i = 0; i < 12; i++) {
 				t = *(const uvec4 *)(qs + i * NB);
 				qn += t * q[i];

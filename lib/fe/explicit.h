@@ -109,6 +109,14 @@ typedef struct dem_fe_opts {
 	double damping;     /* alpha of C = alpha M (1/s), >= 0 */
 	double hg_stiff;    /* kappa of the stiffness form of the hourglass control */
 	double hg_visc;     /* kappa of the viscous form */
+	int hg_tangent;     /* 1: in an element that flows plastically, the
+			     * stiffness form grows on that step with the
+			     * tangent shear ratio H / (3G + H) of J2 (beyond
+			     * Flanagan & Belytschko, who scale it by the
+			     * elastic modulus: then an element flowing under
+			     * a shot stores elastic hourglass stress that its
+			     * plastic flow cannot, and the surface of a single
+			     * impact ends in tension); 0: the elastic modulus */
 	int threads;        /* OpenMP threads; 0: OpenMP's default for meshes of
 			     * 20000 elements or more, 1 for smaller ones (a
 			     * step of a small mesh is shorter than the cost of
@@ -119,7 +127,7 @@ typedef struct dem_fe_opts {
 /* Defaults: DEM_FE_1PT, small strain, dt_factor 0.9, no damping,
  * hg_stiff 0.1 (Flanagan & Belytschko recommend 0.05-0.15; the stiffness
  * form resists the static hourglass modes that a residual stress field
- * would otherwise leave free), hg_visc 0, threads 0. */
+ * would otherwise leave free), hg_visc 0, hg_tangent 1, threads 0. */
 void dem_fe_opts_default(dem_fe_opts_t *o);
 
 /* alpha = 2 xi omega_1 with omega_1 = pi c_s / (2 H) (see above), for a

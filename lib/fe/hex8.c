@@ -500,7 +500,7 @@ unsigned dem_hex8_batch_kin(dem_hex8_batch_t *restrict b,
 
 SIMD_CLONES
 void dem_hex8_batch_hg(const dem_hex8_batch_t *restrict b, const dem_mat_t *m,
-		       double kappa_s, double kappa_v, double dt,
+		       double kappa_s, double kappa_v, double dt, const double *kscale,
 		       double *restrict Qs, double *restrict Q, double *restrict P)
 {
 	/* as dem_hex8_hg_coef and dem_hex8_hg_resist */
@@ -514,6 +514,11 @@ void dem_hex8_batch_hg(const dem_hex8_batch_t *restrict b, const dem_mat_t *m,
 	VLOAD(vol, b->vol);
 	VLOAD(cv, cvs);
 	vec kdt = ksc * bb / vol;
+	if (kscale) {
+		vec ks;
+		VLOAD(ks, kscale);
+		kdt *= ks;
+	}
 	for (int i = 0; i < 12; i++) {
 		vec qi, qs;
 		VLOAD(qi, b->q[i]);

@@ -141,9 +141,11 @@ unsigned dem_hex8_batch_kin(dem_hex8_batch_t *restrict b,
 
 /* Flanagan-Belytschko hourglass resistance of a batch (dem_hex8_hg_coef +
  * dem_hex8_hg_resist): updates the stiffness-form state Qs, writes the
- * generalised forces Q and the hourglass power P of each element. */
+ * generalised forces Q and the hourglass power P of each element.  kscale:
+ * NULL, or a factor per element on this step's increment of the stiffness
+ * form (the explicit driver's tangent ratio for elements that flow). */
 void dem_hex8_batch_hg(const dem_hex8_batch_t *restrict b, const dem_mat_t *m,
-		       double kappa_s, double kappa_v, double dt,
+		       double kappa_s, double kappa_v, double dt, const double *kscale,
 		       double *restrict Qs, double *restrict Q, double *restrict P);
 
 /* Nodal internal forces of a batch (dem_hex8_1pt_force); Q may be NULL. */

@@ -202,11 +202,18 @@ friction_runs() {
 			exit !(zm < 0.1 * zs && pm < 0.5 * ps && dx > 0.2) }'
 }
 
-@test "Ch. 7.5 single shot with the default one-point element: a compressive layer at the surface" {
-	skip "known: one-point integration with hourglass control (kappa 0.1) at d/10 leaves the surface layer at the impact point in tension, sxx +113.9 MPa, with szz +196.5 MPa under the free surface (full integration: -146.1 and -37.4 MPa); hourglass energy 13 % of the internal energy; rebound e = 0.50 against 0.28 (full)"
+@test "Ch. 7.5 single shot with the default one-point element: a compressive layer at the surface, as full integration" {
+	# Once failing (sxx +113.9 MPa at the surface, szz +196.5 MPa below
+	# it, with the stiffness hourglass form growing on the elastic modulus
+	# in elements that flow): fixed by growing it on the tangent there
+	# (dem_fe_opts_t.hg_tangent).  Bound: the layers within 15 % of the
+	# full integration's peak (measured 9.5 %, at 0.15 mm).
 	D=$BATS_FILE_TMPDIR
 	demshot -s "$D/single.yaml" -q -o "$D/one.state" "$D/single.shots" 2> /dev/null
 	profile "$D/one.state" 0.2 > "$D/one"
-	cat "$D/one"
+	profile "$D/single.state" 0.2 > "$D/full"
+	paste "$D/one" "$D/full"
 	check_layer "$D/one"
+	paste "$D/one" "$D/full" | awk '{ d = $2 - $6; if (d < 0) d = -d; if (d > dm) dm = d; if (-$6 > pk) pk = -$6 }
+		END { printf "largest difference %.1f MPa, full peak %.1f MPa\n", dm, pk; exit !(pk > 0 && dm < 0.15 * pk) }'
 }

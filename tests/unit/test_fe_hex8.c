@@ -341,7 +341,7 @@ static void test_batch_kernels(void **state)
 		assert_int_equal(bad, badlane >= 0 ? 1u << badlane : 0u);
 		double Qs0[12][NB];
 		memcpy(Qs0, Qs, sizeof Qs0);
-		dem_hex8_batch_hg(&b, &mat, 0.05, 0.1, 1e-8, Qs[0], Q[0], P);
+		dem_hex8_batch_hg(&b, &mat, 0.05, 0.1, 1e-8, NULL, Qs[0], Q[0], P);
 		dem_hex8_batch_force(&b, sig[0], Q[0], f[0]);
 		for (int l = 0; l < NB; l++) {
 			for (int i = 0; i < 24; i++)
