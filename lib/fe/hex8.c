@@ -515,9 +515,27 @@ void dem_hex8_batch_hg(const dem_hex8_batch_t *restrict b, const dem_mat_t *m,
 	VLOAD(cv, cvs);
 	vec kdt = ksc * bb / vol;
 	if (kscale) {
-		vec ks;
-		VLOAD(ks, kscale);
-		kdt *= ks;
+		/* an increment that loads the stiffness form (raises |Qs|)
+		 * grows on the element's factor, one that unloads it on the
+		 * full stiffness: like plastic loading and elastic unloading,
+		 * so a cycle can only take energy, never give it */
+		double kd[NB], pp[NB] = { 0 }, cw[NB];
+		VSTORE(kd, kdt);
+		VSTORE(cw, cv);
+		for (int i = 0; i < 12; i++)
+			for (int e = 0; e < NB; e++) {
+				double qi = b->q[i][e], inc = kd[e] * qi, qs = Qs[i * NB + e];
+				if (qs * inc > 0)
+					inc *= kscale[e];
+				qs += inc;
+				double qq = qs + cw[e] * qi;
+				Qs[i * NB + e] = qs;
+				Q[i * NB + e] = qq;
+				pp[e] += qq * qi;
+			}
+		for (int e = 0; e < NB; e++)
+			P[e] = pp[e];
+		return;
 	}
 	for (int i = 0; i < 12; i++) {
 		vec qi, qs;
