@@ -24,6 +24,12 @@ awk '$1 != "" { v[$1] = $2 } END {
 		(2 * T <= N ? "" : sprintf(" -- 2T = %.1f is beyond the %d passes run: extrapolated", 2 * T, N))
 	printf "- **intensity h(T) = %.4f mm = %.4f in, i.e. %.4f A** (usable range of the A strip 0.004-0.024 in: %s)\n", \
 		I, I / 25.4, I / 25.4, (I / 25.4 >= 0.004 && I / 25.4 <= 0.024 ? "inside" : "OUTSIDE")
+	if (v["T3"] > 0)
+		printf "- the three-parameter curve h(n) = a (1 - exp(-b n)) + c n (a = %.4f mm, b = %.4f, c = %.5f mm per pass, rms %.4f mm): T = %.2f passes, h(T) = %.4f mm\n", \
+			v["fit3_a"], v["fit3_b"], v["fit3_c"], v["fit3_rms"], v["T3"], v["intensity3"]
+	else
+		printf "- the three-parameter curve h(n) = a (1 - exp(-b n)) + c n (a = %.4f mm, b = %.4f, c = %.5f mm per pass, rms %.4f mm): h(2T) / h(T) stays above 1.1 within the run, no saturation point\n", \
+			v["fit3_a"], v["fit3_b"], v["fit3_c"], v["fit3_rms"]
 	if (v["data_T"] > 0)
 		printf "- the rule on the points themselves: n = %d passes, h = %.4f mm (h(2n) <= 1.1 h(n))\n", v["data_T"], v["data_h"]
 	else
