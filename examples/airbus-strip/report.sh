@@ -70,7 +70,8 @@ for v in $vels; do
 	END {
 		sat = 0
 		for (n = 1; 2 * n <= N; n++) if (h[n] > 0 && h[2 * n] <= 1.1 * h[n]) { sat = n; break }
-		s = sat ? sprintf("%d, %.3f", sat, h[2 * sat] / h[sat]) : sprintf("not reached within %d passes", N)
+		for (n = 1; 2 * n <= N; n++) if (h[n] > 0 && (rmin == "" || h[2 * n] / h[n] < rmin)) { rmin = h[2 * n] / h[n]; nmin = n }
+		s = sat ? sprintf("%d, %.3f", sat, h[2 * sat] / h[sat]) : sprintf("not reached within %d passes (smallest h(2n)/h(n): %.3f at n = %d)", N, rmin, nmin)
 		a = sat ? sprintf("%.4f", h[sat]) : "-"
 		m = int(N / 2)
 		printf "| %s | %s | %s | %+.1f %% | %.4f |\n", v, s, a, 100 * (h[N] - h[m]) / h[m], h[N]
