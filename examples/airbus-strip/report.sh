@@ -1,0 +1,118 @@
+#!/bin/sh
+# report.sh OUT "VELOCITIES" SCENE - the run's report (markdown) from the
+# files in OUT/vV/ of each velocity V: the arc height after each pass, the
+# saturation pass, the profile and the redistributed stress after the last
+# pass, the wall time of each stage (the programs' cost lines).  Everything
+# printed is read from the run's outputs, nothing is typed in.
+#
+# Saturation: the exposure is the number of passes n (pass p of the streams
+# is n = p + 1).  The point is the earliest n for which doubling the
+# exposure raises the arc height by at most 10 %, h(2n) <= 1.1 h(n) (the
+# rule of SAE J443; the thesis's check, Ch. 8.6.2, is the same with n = 16
+# of 32 passes).  Needs 2n within the run.
+set -eu
+out=$1 vels=$2 scene=$3
+
+for v in $vels; do
+	for f in passes.txt saturation.txt centre.txt form.txt demshot.log; do
+		[ -s "$out/v$v/$f" ] || { echo "report.sh: $out/v$v/$f: missing" >&2; exit 1; }
+	done
+done
+
+cost() { # cost FILE PROGRAM KEY: the KEY of PROGRAM's last cost line in FILE
+	sed -n "s/^$2: cost: .*[ ]$3=\([^ ]*\).*/\1/p; s/^$2: cost: $3=\([^ ]*\).*/\1/p" "$1" | tail -n 1
+}
+costsum() { # costsum FILE PROGRAM KEY: the sum over all its cost lines
+	sed -n "s/^$2: cost: $3=\([^ ]*\).*/\1/p" "$1" | awk '{ s += $1; n++ } END { printf "%.2f %d", s, n }'
+}
+
+first=$(set -- $vels; echo "$1")
+elements=$(sed -n 's/^demshot: block of \([0-9]*\) elements.*/\1/p' "$out/v$first/demshot.log" | head -n 1)
+npass=$(awk '!/^#/ { n++ } END { print n }' "$out/v$first/passes.txt")
+echo "# airbus-strip: report of the run in \`$out/\`"
+echo
+echo "Written by report.sh from the run's outputs (scene \`$scene\`: sample block of"
+echo "$elements hex8, $npass passes of 16 shots; strip 4500 hex8, free, small strain)."
+echo
+
+echo "## Arc height after each pass (mm, over the 150 mm length)"
+echo
+hdr="| passes |" sep="|---|"
+for v in $vels; do hdr="$hdr v = $v m/s | coverage |"; sep="$sep---|---|"; done
+echo "$hdr"; echo "$sep"
+# join the passes tables of the velocities row by row
+awk -v vels="$vels" -v out="$out" 'BEGIN {
+	nv = split(vels, V, " ")
+	for (i = 1; i <= nv; i++) {
+		f = out "/v" V[i] "/passes.txt"
+		while ((getline l < f) > 0) {
+			if (l ~ /^#/) continue
+			split(l, c, " "); p = c[1] + 0; h[i, p] = c[3]; cov[i, p] = c[2]
+			if (p > last) last = p
+		}
+	}
+	for (p = 0; p <= last; p++) {
+		s = "| " p + 1 " |"
+		for (i = 1; i <= nv; i++) s = s sprintf(" %.4f | %.2f |", h[i, p], cov[i, p])
+		print s
+	}
+}'
+echo
+echo "(coverage: the share of the profile region indented by more than 1 um.)"
+echo
+
+echo "## Saturation"
+echo
+echo "| v (m/s) | saturation point: passes n, h(2n) / h(n) | arc height there (mm) | change from n = $((npass / 2)) to $npass | arc height after $npass passes (mm) |"
+echo "|---|---|---|---|---|"
+for v in $vels; do
+	awk -v v="$v" '!/^#/ { n = $1 + 1; h[n] = $3; N = n }
+	END {
+		sat = 0
+		for (n = 1; 2 * n <= N; n++) if (h[n] > 0 && h[2 * n] <= 1.1 * h[n]) { sat = n; break }
+		for (n = 1; 2 * n <= N; n++) if (h[n] > 0 && (rmin == "" || h[2 * n] / h[n] < rmin)) { rmin = h[2 * n] / h[n]; nmin = n }
+		s = sat ? sprintf("%d, %.3f", sat, h[2 * sat] / h[sat]) : sprintf("not reached within %d passes (smallest h(2n)/h(n): %.3f at n = %d)", N, rmin, nmin)
+		a = sat ? sprintf("%.4f", h[sat]) : "-"
+		m = int(N / 2)
+		printf "| %s | %s | %s | %+.1f %% | %.4f |\n", v, s, a, 100 * (h[N] - h[m]) / h[m], h[N]
+	}' "$out/v$v/passes.txt"
+done
+echo
+echo "Rule: the earliest n with h(2n) <= 1.1 h(n) (doubling the exposure raises"
+echo "the arc height by at most 10 %; SAE J443).  The thesis checks pass 16"
+echo "against pass 32 (Ch. 8.6.2); the column before last is that check."
+echo
+
+echo "## Residual profile of the sample block and the formed strip (last pass)"
+echo
+echo "| v (m/s) | surface sxx (MPa) | peak sxx (MPa) at depth (mm) | compressive to (mm) | ep at surface | strip centre, peened face sxx (MPa) | peak tension (MPa) at depth (mm) | unpeened face sxx (MPa) | curvature x, y (1/m) |"
+echo "|---|---|---|---|---|---|---|---|---|"
+for v in $vels; do
+	prof=$(awk '!/^#/ { l = $0 } END { split(l, c, " "); printf "%.0f | %.0f at %.2f | %.2f | %.3f", c[2] / 1e6, c[3] / 1e6, c[4] * 1e3, c[5] * 1e3, c[6] }' "$out/v$v/saturation.txt")
+	cen=$(awk '!/^#/ { n++; if (n == 1) top = $2; if ($2 > mx) { mx = $2; dm = $1 } bot = $2 }
+		END { printf "%.0f | %.0f at %.2f | %.0f", top / 1e6, mx / 1e6, dm * 1e3, bot / 1e6 }' "$out/v$v/centre.txt")
+	curv=$(awk '{ c[$1] = $2 } END { printf "%.3f, %.3f", c["curvature_x:"], c["curvature_y:"] }' "$out/v$v/form.txt")
+	echo "| $v | $prof | $cen | $curv |"
+done
+echo
+
+echo "## Wall time of each stage (s)"
+echo
+echo "| v (m/s) | dempack | demshot | demshot per pass | demprofile | demform, every pass (runs) | demform, last pass with --centre |"
+echo "|---|---|---|---|---|---|---|"
+for v in $vels; do
+	d=$out/v$v
+	shot=$(cost "$d/demshot.log" demshot wall_s)
+	set -- $(costsum "$d/demform-passes.log" demform wall_s)
+	echo "| $v | $(cost "$d/dempack.log" dempack wall_s) | $shot | $(awk -v s="$shot" -v n="$npass" 'BEGIN { printf "%.1f", s / n }') | $(cost "$d/demprofile.log" demprofile wall_s) | $1 ($2) | $(cost "$d/demform.log" demform wall_s) |"
+done
+echo
+echo "demshot's cost lines (elements, steps, ns per element cycle):"
+echo
+for v in $vels; do
+	echo "- v = $v m/s: $(grep '^demshot: cost:' "$out/v$v/demshot.log" | tail -n 1 | sed 's/^demshot: cost: //')"
+done
+echo
+echo "Plots: \`$out/saturation.png\` (arc height per pass), \`$out/profiles.png\`"
+echo "(sxx and ep against depth per pass), \`$out/redistributed.png\` (sxx through"
+echo "the strip, imposed and redistributed)."

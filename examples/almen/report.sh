@@ -1,0 +1,57 @@
+#!/bin/sh
+# report.sh OUT SCENE - the Almen run's report (markdown), from the files in
+# OUT: the saturation curve, the saturation point and intensity (fit.txt of
+# saturation.sh), the wall time of each stage.  Nothing typed in.
+set -eu
+out=$1 scene=$2
+for f in curve.txt fit.txt saturation.txt demshot.log demform.log; do
+	[ -s "$out/$f" ] || { echo "report.sh: $out/$f: missing" >&2; exit 1; }
+done
+val() { awk -v k="$1" '$1 == k { print $2 }' "$out/fit.txt"; }
+cost() { sed -n "s/^$2: cost: .*[ ]$3=\([^ ]*\).*/\1/p; s/^$2: cost: $3=\([^ ]*\).*/\1/p" "$1" | tail -n 1; }
+
+elements=$(sed -n 's/^demshot: block of \([0-9]*\) elements.*/\1/p' "$out/demshot.log" | head -n 1)
+echo "# almen: report of the run in \`$out/\`"
+echo
+echo "Written by report.sh from the run's outputs (scene \`$scene\`, sample block of $elements hex8)."
+echo
+echo "## Saturation point and intensity"
+echo
+awk '$1 != "" { v[$1] = $2 } END {
+	T = v["T"]; I = v["intensity"]; N = v["nmax"]
+	printf "- fit h(n) = a (1 - exp(-b n)): a = %.4f mm, b = %.4f per pass, rms misfit %.4f mm\n", v["fit_a"], v["fit_b"], v["fit_rms"]
+	printf "- **saturation point T = %.1f passes** (h(2T) = 1.1 h(T): T = ln 10 / b)%s\n", T, \
+		(2 * T <= N ? "" : sprintf(" -- 2T = %.1f is beyond the %d passes run: extrapolated", 2 * T, N))
+	printf "- **intensity h(T) = %.4f mm = %.4f in, i.e. %.4f A** (usable range of the A strip 0.004-0.024 in: %s)\n", \
+		I, I / 25.4, I / 25.4, (I / 25.4 >= 0.004 && I / 25.4 <= 0.024 ? "inside" : "OUTSIDE")
+	if (v["T3"] > 0)
+		printf "- the three-parameter curve h(n) = a (1 - exp(-b n)) + c n (a = %.4f mm, b = %.4f, c = %.5f mm per pass, rms %.4f mm): T = %.2f passes, h(T) = %.4f mm\n", \
+			v["fit3_a"], v["fit3_b"], v["fit3_c"], v["fit3_rms"], v["T3"], v["intensity3"]
+	else
+		printf "- the three-parameter curve h(n) = a (1 - exp(-b n)) + c n (a = %.4f mm, b = %.4f, c = %.5f mm per pass, rms %.4f mm): h(2T) / h(T) stays above 1.1 within the run, no saturation point\n", \
+			v["fit3_a"], v["fit3_b"], v["fit3_c"], v["fit3_rms"]
+	if (v["data_T"] > 0)
+		printf "- the rule on the points themselves: n = %d passes, h = %.4f mm (h(2n) <= 1.1 h(n))\n", v["data_T"], v["data_h"]
+	else
+		printf "- the rule on the points themselves: no n with 2n measured satisfies h(2n) <= 1.1 h(n)\n"
+}' "$out/fit.txt"
+echo
+echo "## The curve"
+echo
+echo "| passes | coverage | arc height (mm) | (in) | h(2n)/h(n) | curvature x, y (1/m) | surface sxx of the held block (MPa) |"
+echo "|---|---|---|---|---|---|---|"
+awk 'FNR == NR { if (!/^#/) s[$1 + 1] = $2; next }
+	!/^#/ { n[++N] = $1; c[N] = $2; h[N] = $3; H[$1] = $3; kx[N] = $4; ky[N] = $5 }
+	END { for (i = 1; i <= N; i++) {
+		r = (2 * n[i]) in H ? sprintf("%.3f", H[2 * n[i]] / h[i]) : "-"
+		printf "| %d | %.2f | %.4f | %.5f | %s | %.3f, %.3f | %.0f |\n", n[i], c[i], h[i], h[i] / 25.4, r, kx[i], ky[i], s[n[i]] / 1e6 } }' \
+	"$out/saturation.txt" "$out/curve.txt"
+echo
+echo "## Wall time (s)"
+echo
+nf=$(sed -n 's/^demform: cost: wall_s=\([^ ]*\).*/\1/p' "$out/demform.log" | awk '{ s += $1; n++ } END { printf "%.1f (%d runs)", s, n }')
+echo "dempack $(cost "$out/dempack.log" dempack wall_s), demshot $(cost "$out/demshot.log" demshot wall_s), demprofile $(cost "$out/demprofile.log" demprofile wall_s), demform $nf"
+echo
+echo "demshot: $(grep '^demshot: cost:' "$out/demshot.log" | tail -n 1 | sed 's/^demshot: cost: //')"
+echo
+echo "Plot: \`$out/saturation.png\`."
