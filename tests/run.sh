@@ -25,8 +25,13 @@ if ls tests/cli/*.bats >/dev/null 2>&1; then
 		tail -20 "$log/cli.err" >&2
 	fi
 fi
-pass=$(cat "$log"/*.tap 2>/dev/null | grep -c '^ok ')
-fail=$(cat "$log"/*.tap 2>/dev/null | grep -c '^not ok ')
+# skipped tests (cmocka: "not ok N # SKIP name", bats: "ok N name # skip
+# reason") are the documented known failures: neither passed nor failed
+all=$(cat "$log"/*.tap 2>/dev/null)
+skip=$(printf '%s\n' "$all" | grep -ci '^\(not \)\{0,1\}ok .*# skip')
+pass=$(printf '%s\n' "$all" | grep '^ok ' | grep -vic '# skip')
+fail=$(printf '%s\n' "$all" | grep '^not ok ' | grep -vic '# skip')
+[ "$skip" -eq 0 ] || echo "$skip skipped (known failures, each with its figures in the test)"
 # a test program that died before reporting counts as a failure too
 if [ "$status" -ne 0 ] && [ "$fail" -eq 0 ]; then fail=1; fi
 echo "$pass passed, $fail failed"
