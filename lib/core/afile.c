@@ -2,10 +2,64 @@
 #include "core/afile.h"
 
 #include <errno.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+
+/* ---- temporary files removed on a fatal signal -------------------------- */
+
+#define GUARD_MAX 32
+static const char *volatile guarded[GUARD_MAX];
+static volatile sig_atomic_t handlers_set;
+static const int guard_sigs[] = { SIGINT, SIGTERM, SIGHUP, SIGPIPE };
+
+static void on_fatal_signal(int sig)
+{
+	for (int i = 0; i < GUARD_MAX; i++)
+		if (guarded[i])
+			unlink(guarded[i]);   /* async-signal-safe */
+	signal(sig, SIG_DFL);
+	raise(sig);
+}
+
+static void set_handlers(void)
+{
+	for (size_t k = 0; k < sizeof guard_sigs / sizeof *guard_sigs; k++) {
+		struct sigaction old, sa;
+		/* leave alone a signal the caller ignores or handles */
+		if (sigaction(guard_sigs[k], NULL, &old) != 0 || old.sa_handler != SIG_DFL)
+			continue;
+		memset(&sa, 0, sizeof sa);
+		sa.sa_handler = on_fatal_signal;
+		sigemptyset(&sa.sa_mask);
+		sigaction(guard_sigs[k], &sa, NULL);
+	}
+	handlers_set = 1;
+}
+
+void dem_tmp_guard(const char *tmp)
+{
+	if (!tmp)
+		return;
+	if (!handlers_set)
+		set_handlers();
+	for (int i = 0; i < GUARD_MAX; i++)
+		if (!guarded[i]) {
+			guarded[i] = tmp;
+			return;
+		}
+}
+
+void dem_tmp_forget(const char *tmp)
+{
+	for (int i = 0; tmp && i < GUARD_MAX; i++)
+		if (guarded[i] == tmp)
+			guarded[i] = NULL;
+}
+
+/* ---- atomic files ----------------------------------------------------- */
 
 int dem_afile_open(dem_afile_t *a, const char *path, const char *mode,
 		   dem_error_t *e)
@@ -33,6 +87,7 @@ int dem_afile_open(dem_afile_t *a, const char *path, const char *mode,
 		return dem_error_set(e, DEM_EIO, "%s: %s", path, strerror(err));
 	}
 	fchmod(fd, 0644);
+	dem_tmp_guard(a->tmp);
 	return DEM_OK;
 }
 
@@ -45,7 +100,9 @@ int dem_afile_commit(dem_afile_t *a, int sync, dem_error_t *e)
 	      (sync && fsync(fileno(a->f)) != 0);
 	bad |= fclose(a->f) != 0;
 	a->f = NULL;
-	if (bad || rename(a->tmp, a->path) != 0) {
+	if (!bad && rename(a->tmp, a->path) == 0)
+		dem_tmp_forget(a->tmp);
+	else {
 		dem_error_set(e, DEM_EIO, "%s: %s", a->path,
 			      strerror(errno ? errno : EIO));
 		dem_afile_abort(a);
@@ -61,8 +118,10 @@ void dem_afile_abort(dem_afile_t *a)
 {
 	if (a->f)
 		fclose(a->f);
-	if (a->tmp)
+	if (a->tmp) {
 		unlink(a->tmp);
+		dem_tmp_forget(a->tmp);
+	}
 	free(a->path);
 	free(a->tmp);
 	memset(a, 0, sizeof *a);

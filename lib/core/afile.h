@@ -25,4 +25,13 @@ int dem_afile_commit(dem_afile_t *a, int sync, dem_error_t *e);
  * finished a is fine. */
 void dem_afile_abort(dem_afile_t *a);
 
+/* Temporary files in progress, removed if a signal (SIGINT, SIGTERM,
+ * SIGHUP, SIGPIPE) ends the process before they are renamed or removed:
+ * the handler unlinks them and dies of the signal as before.  Every
+ * writer of the library that makes a temporary file registers it (the
+ * string must live until dem_tmp_forget) and forgets it before freeing
+ * it.  At most 32 at once; beyond, a file is not guarded (no error). */
+void dem_tmp_guard(const char *tmp);
+void dem_tmp_forget(const char *tmp);
+
 #endif

@@ -1,6 +1,7 @@
 /* stream.c - reading and writing the toolkit's record streams. */
 #include "io/stream.h"
 
+#include "core/afile.h"
 #include "core/fmt.h"
 
 #include <errno.h>
@@ -274,6 +275,7 @@ int dem_writer_open(dem_writer_t **wp, const char *path, const dem_header_t *h,
 			return dem_error_set(e, DEM_EIO, "%s: %s", path, strerror(err));
 		}
 		fchmod(fd, 0644);
+		dem_tmp_guard(w->tmp);
 	} else {
 		snprintf(w->name, sizeof w->name, "stdout");
 		fd = dup(STDOUT_FILENO);
@@ -392,6 +394,7 @@ static void writer_free(dem_writer_t *w)
 {
 	dem_header_free(&w->h);
 	free(w->path);
+	dem_tmp_forget(w->tmp);
 	free(w->tmp);
 	free(w->blk);
 	free(w->line);

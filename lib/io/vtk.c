@@ -1,6 +1,8 @@
 /* vtk.c - legacy VTK PolyData writer for packings (see vtk.h). */
 #include "io/vtk.h"
 
+#include "core/afile.h"
+
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -24,6 +26,7 @@ void dem_vtk_abort(dem_vtk_t *w)
 		fclose(w->f);
 	if (w->tmp)
 		unlink(w->tmp);
+	dem_tmp_forget(w->tmp);
 	free(w->path);
 	free(w->tmp);
 	free(w->r);
@@ -74,6 +77,7 @@ int dem_vtk_open(dem_vtk_t **wp, const char *path, int dim, size_t n,
 		return DEM_EIO;
 	}
 	fchmod(fd, 0644);
+	dem_tmp_guard(w->tmp);
 	if (!(w->f = fdopen(fd, "w"))) {
 		close(fd);
 		return fail_io(w, e);
@@ -127,6 +131,7 @@ int dem_vtk_close(dem_vtk_t *w, dem_error_t *e)
 	w->f = NULL;
 	if (rc != 0 || rename(w->tmp, w->path) != 0)
 		return fail_io(w, e);
+	dem_tmp_forget(w->tmp);
 	free(w->tmp);
 	w->tmp = NULL;
 	dem_vtk_abort(w);       /* frees; nothing left to remove */

@@ -379,3 +379,21 @@ YAML
 	[ "$status" -eq 1 ]
 	grep -q "unknown key 'shot.densty'" <<< "$stderr"
 }
+
+@test "demshot: stopped by SIGTERM or SIGHUP, it leaves no temporary file behind" {
+	# (SIGINT is guarded too, but a background job of a script ignores it)
+	shot_scene
+	for sig in TERM HUP; do
+		rm -f "$T"/k.state*
+		demshot -s "$T/shot.yaml" -q --pass-time 2000us -o "$T/k.state" "$T/s2.txt" 2> /dev/null &
+		pid=$!
+		for i in $(seq 100); do ls "$T"/k.state.tmp.* > /dev/null 2>&1 && break; sleep 0.05; done
+		ls "$T"/k.state.tmp.*
+		kill -$sig $pid
+		st=0
+		wait $pid || st=$?
+		echo "$sig: status $st"
+		[ "$st" -gt 128 ]
+		[ -z "$(ls "$T"/k.state* 2> /dev/null)" ]
+	done
+}
