@@ -31,7 +31,7 @@ all=$(cat "$log"/*.tap 2>/dev/null)
 skip=$(printf '%s\n' "$all" | grep -ci '^\(not \)\{0,1\}ok .*# skip')
 pass=$(printf '%s\n' "$all" | grep '^ok ' | grep -vic '# skip')
 fail=$(printf '%s\n' "$all" | grep '^not ok ' | grep -vic '# skip')
-[ "$skip" -eq 0 ] || echo "$skip skipped (known failures, each with its figures in the test)"
+[ "$skip" -eq 0 ] || echo "$skip skipped (each says why in the test: a known failure with its figures, or not run in this build)"
 # a test program that died before reporting counts as a failure too
 if [ "$status" -ne 0 ] && [ "$fail" -eq 0 ]; then fail=1; fi
 echo "$pass passed, $fail failed"
