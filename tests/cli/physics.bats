@@ -143,6 +143,7 @@ friction_runs() {
 }
 
 @test "Ch. 7.5.3 friction (Fig. 7.17): the peak compressive stress grows up to mu = 0.2, then levels off" {
+	[ "${DEM_SANITIZE:-}" != 1 ] || skip "sanitizer build: the physics is checked in the plain build; these runs take minutes under ASan"
 	# Thesis: the residual stress increases with mu; beyond 0.2 further
 	# increase has no significant influence.  Asserted on the peak
 	# compressive sxx along the centre line, P(mu): P(0) < P(0.1) < P(0.2),
@@ -170,6 +171,7 @@ friction_runs() {
 }
 
 @test "Ch. 7.5.5 single and 4 x 4 shots (Fig. 7.19): szz near zero and a different sxx profile over the impact area" {
+	[ "${DEM_SANITIZE:-}" != 1 ] || skip "sanitizer build: the physics is checked in the plain build; these runs take minutes under ASan"
 	# The multi-shot model: 16 shots in one pass at the centres of the 1 mm
 	# cells of a 4 x 4 mm area (regularly packed: neighbours touch), profiled
 	# over that area; the single shot along its centre line.  Asserted:
