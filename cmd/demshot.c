@@ -230,7 +230,7 @@ static int read_load(dem_scene_t *s, struct settings *st, dem_error_t *e)
 static int read_shots(dem_scene_t *s, int accuracy, struct settings *st, dem_error_t *e)
 {
 	static const char *const laws[] = {"power", "hertz", NULL};
-	static const char *const partials[] = {"area", "volume", NULL};
+	static const char *const partials[] = {"area", "volume", "potential", NULL};
 	dem_contact_param_t p = {0};
 	double m, alpha, h = HUGE_VAL;
 	int law, partial;

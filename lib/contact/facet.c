@@ -7,13 +7,24 @@
 #include "contact/vec3.h"
 #include "core/consts.h"
 
+/* The sums over one circle/triangle overlap: area S, first moments (Mx,
+ * My), polar moment J, the moments (Kx, Ky) of r^2 x, r^2 y; and over the
+ * arc of the circle inside the triangle (theta the direction on the
+ * circle): its angle th, the sums of sin and cos differences sx = int cos,
+ * sy = int sin, and s2, c2 the differences of sin 2 theta and cos 2 theta
+ * (the integrals of nu nu^T d theta, nu the circle's unit normal). */
+typedef struct overlap {
+	double S, Mx, My, J, Kx, Ky;
+	double th, sx, sy, s2, c2;
+} overlap_t;
+
 /* The signed piece of one edge, A -> B (relative to the circle's centre):
  * the circle's part inside the triangle (0, A, B), signed by its
  * orientation.  The edge is cut where it crosses the circle; a stretch
  * inside the circle gives the triangle (0, P, Q), a stretch outside the
- * circular sector between the directions of P and Q. */
-static void edge_piece(double ax, double ay, double bx, double by, double r,
-                       double *S, double *Mx, double *My, double *J, double *Kx, double *Ky)
+ * circular sector between the directions of P and Q, whose arc is the
+ * arc's share of this piece. */
+static void edge_piece(double ax, double ay, double bx, double by, double r, overlap_t *o)
 {
 	double dx = bx - ax, dy = by - ay;
 	double qa = dx * dx + dy * dy, qb = ax * dx + ay * dy, qc = ax * ax + ay * ay - r * r;
@@ -44,44 +55,50 @@ static void edge_piece(double ax, double ay, double bx, double by, double r,
 		if (i == 1) {
 			/* triangle (0, P, Q); cubic moments by int s^a t^b = a! b!/(a+b+2)! */
 			double s = 0.5 * cr, pp = px * px + py * py, qq = qx * qx + qy * qy, pq = px * qx + py * qy;
-			*S += s;
-			*Mx += s * (px + qx) / 3;
-			*My += s * (py + qy) / 3;
-			*J += s * (pp + qq + pq) / 6;
-			*Kx += cr * ((px * pp + qx * qq) / 20 + (2 * px * pq + qx * pp + px * qq + 2 * qx * pq) / 60);
-			*Ky += cr * ((py * pp + qy * qq) / 20 + (2 * py * pq + qy * pp + py * qq + 2 * qy * pq) / 60);
+			o->S += s;
+			o->Mx += s * (px + qx) / 3;
+			o->My += s * (py + qy) / 3;
+			o->J += s * (pp + qq + pq) / 6;
+			o->Kx += cr * ((px * pp + qx * qq) / 20 + (2 * px * pq + qx * pp + px * qq + 2 * qx * pq) / 60);
+			o->Ky += cr * ((py * pp + qy * qq) / 20 + (2 * py * pq + qy * pp + py * qq + 2 * qy * pq) / 60);
 		} else {
 			/* sector between the directions of P and Q */
 			double th = atan2(cr, px * qx + py * qy);
 			double s = 0.5 * r2 * th;
 			double lp = sqrt(px * px + py * py), lq = sqrt(qx * qx + qy * qy);
-			double sx = qy / lq - py / lp, sy = px / lp - qx / lq;
+			double cp = px / lp, sp = py / lp, cq = qx / lq, sq = qy / lq;
+			double sx = sq - sp, sy = cp - cq;
 			double c = r2 * r / 3;
-			*S += s;
-			*Mx += c * sx;
-			*My += c * sy;
-			*J += 0.5 * s * r2;
-			*Kx += 0.6 * c * r2 * sx;  /* r^5/5 */
-			*Ky += 0.6 * c * r2 * sy;
+			o->S += s;
+			o->Mx += c * sx;
+			o->My += c * sy;
+			o->J += 0.5 * s * r2;
+			o->Kx += 0.6 * c * r2 * sx;  /* r^5/5 */
+			o->Ky += 0.6 * c * r2 * sy;
+			o->th += th;
+			o->sx += sx;
+			o->sy += sy;
+			o->s2 += 2 * (sq * cq - sp * cp);
+			o->c2 += (cq * cq - sq * sq) - (cp * cp - sp * sp);
 		}
 	}
 }
 
-static void circle_triangle(const double x[3], const double y[3], double r, double *S, double *Mx,
-                            double *My, double *J, double *Kx, double *Ky)
+static void circle_triangle(const double x[3], const double y[3], double r, overlap_t *o)
 {
-	*S = *Mx = *My = *J = *Kx = *Ky = 0;
+	*o = (overlap_t){ 0 };
 	for (int i = 0; i < 3; i++) {
 		int j = (i + 1) % 3;
-		edge_piece(x[i], y[i], x[j], y[j], r, S, Mx, My, J, Kx, Ky);
+		edge_piece(x[i], y[i], x[j], y[j], r, o);
 	}
 }
 
 void dem_circle_triangle(const double x[3], const double y[3], double r,
                          double *S, double *Mx, double *My, double *J)
 {
-	double Kx, Ky;
-	circle_triangle(x, y, r, S, Mx, My, J, &Kx, &Ky);
+	overlap_t o;
+	circle_triangle(x, y, r, &o);
+	*S = o.S, *Mx = o.Mx, *My = o.My, *J = o.J;
 }
 
 int dem_facet_geom(const double O[3], double R, const double X[3][3], int scheme,
@@ -125,29 +142,42 @@ int dem_facet_geom(const double O[3], double R, const double X[3][3], int scheme
 		if (dist < b)
 			full = 0;
 	}
-	double S, Mx, My, J, Kx, Ky, gx = 0, gy = 0;
+	double S, gx = 0, gy = 0;
 	g->gamma = 1;
+	g->pot = 0;
 	if (full) {
 		S = DEM_PI * b2;
 	} else {
-		circle_triangle(x, y, b, &S, &Mx, &My, &J, &Kx, &Ky);
+		overlap_t o;
+		circle_triangle(x, y, b, &o);
+		S = o.S;
 		/* grazing: nothing left but round-off */
 		if (!(S > 1e-13 * DEM_PI * b2))
 			return 0;
 		if (scheme == DEM_PARTIAL_VOLUME) {
 			/* V_p / V_f over the cap delta (1 - r^2/b^2), and G its
 			 * centroid projected on the plane */
-			double w = S - J / b2;
-			if (!(w > 0))
+			double wv = S - o.J / b2;
+			if (!(wv > 0))
 				return 0;
-			g->gamma = 2 * w / (DEM_PI * b2);
-			gx = (Mx - Kx / b2) / w, gy = (My - Ky / b2) / w;
+			g->gamma = 2 * wv / (DEM_PI * b2);
+			gx = (o.Mx - o.Kx / b2) / wv, gy = (o.My - o.Ky / b2) / wv;
 		} else {
 			g->gamma = S / (DEM_PI * b2);  /* Eq. 3.15 */
-			gx = Mx / S, gy = My / S;      /* Eq. 3.21, G relative to C */
+			gx = o.Mx / S, gy = o.My / S;  /* Eq. 3.21, G relative to C */
 		}
 		if (g->gamma > 1)
 			g->gamma = 1;
+		if (scheme == DEM_PARTIAL_POTENTIAL) {
+			g->pot = 1;
+			g->R = R;
+			g->d = d;
+			g->A2 = A2;
+			for (int i = 0; i < 3; i++) {
+				g->nf[i] = nf[i], g->u[i] = u[i], g->w[i] = w[i];
+				g->x[i] = x[i], g->y[i] = y[i];
+			}
+		}
 	}
 	g->delta = delta;
 	g->b = b;
@@ -167,6 +197,175 @@ int dem_facet_geom(const double O[3], double R, const double X[3][3], int scheme
 		g->N[i] = ((x[j] - gx) * (y[k] - gy) - (x[k] - gx) * (y[j] - gy)) / A2;
 	}
 	return 1;
+}
+
+/* ---- The potential scheme (facet.h) ------------------------------------- */
+
+/* Gauss-Legendre, 8 points on [0, 1] */
+static const double gl_t[8] = {
+	0.019855071751231856, 0.10166676129318664, 0.2372337950418355, 0.4082826787521751,
+	0.5917173212478249, 0.7627662049581645, 0.8983332387068134, 0.9801449282487681,
+};
+static const double gl_w[8] = {
+	0.05061426814518813, 0.11119051722668724, 0.15685332293894363, 0.18134189168918100,
+	0.18134189168918100, 0.15685332293894363, 0.11119051722668724, 0.05061426814518813,
+};
+
+/* The branch of the law, F(g) = c g^m for g > 0, g = R' - q the overlap of
+ * a point at distance q from O with the branch's sphere of radius R'. */
+typedef struct branch {
+	double c, m, R, d, delta;  /* c, m, R', the plane's distance d, R' - d */
+	double w0;                 /* w at C: F(delta) / (2 pi d) */
+	double W0;                 /* W(delta) = c delta^(m+1) / (m+1) */
+} branch_t;
+
+static inline double br_W(const branch_t *B, double g)
+{
+	return g > 0 ? B->c * pow(g, B->m + 1) / (B->m + 1) : 0;
+}
+
+/* w(q^2) = F(R' - q) / (2 pi q): the energy per unit area of a surface
+ * point at distance q from O (see facet.h) */
+static inline double br_w(const branch_t *B, double q)
+{
+	double g = B->R - q;
+	return g > 0 ? B->c * pow(g, B->m) / (2 * DEM_PI * q) : 0;
+}
+
+/* The integrals over the part of the circle (centre C = 0, radius b) inside
+ * the triangle (x, y): A0 = int w dA, B0 = int 2 w' dA, B1 = int 2 w' y dA,
+ * B2 = int 2 w' y y^T dA (w' = dw/d(q^2), y in-plane relative to C).  The
+ * region is summed from the signed edge pieces as S_p is (sectors in
+ * closed form, the triangles (0, P, Q) along their chords, the radial
+ * integrals being closed); B1 is int grad w dA, the flux of w through the
+ * region's boundary, where w = 0 on the arc: only the chords inside the
+ * circle count.  Along a chord: two 8-point Gauss-Legendre panels in tau,
+ * t = tau^2 (3 - 2 tau), which smooths the ends where the chord meets the
+ * circle (w ~ g^m there): the forces then match central differences of the
+ * potential to 1e-6 of the force (tests/unit/test_contact_facet.c), against
+ * 3e-4 with 8 plain points. */
+static void local_integrals(const branch_t *B, const double x[3], const double y[3], double b,
+                            double *A0, double *B0, double B1[2], double B2[3])
+{
+	*A0 = *B0 = 0;
+	B1[0] = B1[1] = B2[0] = B2[1] = B2[2] = 0;
+	double b2 = b * b, d2 = B->d * B->d;
+	for (int e = 0; e < 3; e++) {
+		int f = (e + 1) % 3;
+		double ax = x[e], ay = y[e], dx = x[f] - ax, dy = y[f] - ay;
+		double qa = dx * dx + dy * dy, qb = ax * dx + ay * dy, qc = ax * ax + ay * ay - b2;
+		double t[4] = { 0, 0, 0, 1 };
+		double disc = qb * qb - qa * qc;
+		if (qa > 0 && disc > 0) {
+			double sq = sqrt(disc);
+			double q = qb > 0 ? -(qb + sq) : -(qb - sq);
+			double t1 = q / qa, t2 = q != 0 ? qc / q : t1;
+			if (t1 > t2) {
+				double h = t1;
+				t1 = t2, t2 = h;
+			}
+			t[1] = fmin(fmax(t1, 0), 1);
+			t[2] = fmin(fmax(t2, 0), 1);
+		}
+		for (int i = 0; i < 3; i++) {
+			if (!(t[i + 1] > t[i]))
+				continue;
+			double px = ax + t[i] * dx, py = ay + t[i] * dy;
+			double qx = ax + t[i + 1] * dx, qy = ay + t[i + 1] * dy;
+			double cr = px * qy - py * qx;
+			if (i != 1) {
+				/* sector: int_0^b w r dr = W0 / (2 pi), int_0^b 2 w' r dr =
+				 * -w0, int_0^b 2 w' r^3 dr = -2 int_0^b w r dr */
+				double th = atan2(cr, px * qx + py * qy);
+				double lp = sqrt(px * px + py * py), lq = sqrt(qx * qx + qy * qy);
+				double cp = px / lp, sp = py / lp, cq = qx / lq, sq = qy / lq;
+				double s2 = 2 * (sq * cq - sp * cp), c2 = (cq * cq - sq * sq) - (cp * cp - sp * sp);
+				double rb2 = -B->W0 / DEM_PI;
+				*A0 += th * B->W0 / (2 * DEM_PI);
+				*B0 -= th * B->w0;
+				B2[0] += rb2 * (0.5 * th + 0.25 * s2);
+				B2[1] += rb2 * (-0.25 * c2);
+				B2[2] += rb2 * (0.5 * th - 0.25 * s2);
+				continue;
+			}
+			/* triangle (0, P, Q): points s y_t, y_t = P + t (Q - P), dA =
+			 * cr s ds dt; for f(r) phi(y), phi of degree k, int_0^1 f(s rho)
+			 * s^(k+1) ds = R_k(rho) / rho^(k+2), with R_0 = int_0^rho w r dr
+			 * = (W0 - W(g)) / (2 pi), int_0^rho 2 w' r dr = w(rho) - w0 and
+			 * int_0^rho 2 w' r^3 dr = rho^2 w(rho) - 2 R_0 (rho = |y_t|,
+			 * g = R' - sqrt(rho^2 + d^2)); fw: int_0^1 w dt on the chord */
+			double ex = qx - px, ey = qy - py, fw = 0;
+			for (int kk = 0; kk < 16; kk++) {
+				int k = kk % 8;
+				double tau = ((kk / 8) + gl_t[k]) / 2;
+				double tt = tau * tau * (3 - 2 * tau), jac = 6 * tau * (1 - tau);
+				double yx = px + tt * ex, yy = py + tt * ey;
+				double r2 = yx * yx + yy * yy, q = sqrt(r2 + d2);
+				double wq = br_w(B, q);
+				double R0 = (B->W0 - br_W(B, B->R - q)) / (2 * DEM_PI);
+				double cw = cr * gl_w[k] * jac / 2 / r2;
+				*A0 += cw * R0;
+				*B0 += cw * (wq - B->w0);
+				double r4 = (r2 * wq - 2 * R0) / r2;
+				B2[0] += cw * r4 * yx * yx;
+				B2[1] += cw * r4 * yx * yy;
+				B2[2] += cw * r4 * yy * yy;
+				fw += gl_w[k] * jac / 2 * wq;
+			}
+			/* outward normal of an anticlockwise edge: (ey, -ex) / |e| */
+			B1[0] += ey * fw;
+			B1[1] -= ex * fw;
+		}
+	}
+}
+
+void dem_facet_forces(const dem_facet_geom_t *g, const dem_contact_out_t *o, double m,
+                      double F[3], double Fnode[3][3], double *Phi)
+{
+	if (!g->pot) {
+		for (int a = 0; a < 3; a++)
+			for (int i = 0; i < 3; i++)
+				Fnode[a][i] = -g->N[a] * o->F[i];
+		for (int i = 0; i < 3; i++)
+			F[i] = o->F[i];
+		if (Phi) {
+			double x = g->delta - o->bg0;
+			*Phi = x > 0 ? g->gamma * o->bc * pow(x, m + 1) / (m + 1) : 0;
+		}
+		return;
+	}
+	/* the branch's sphere, R' = R - g0 */
+	branch_t B = { .c = o->bc, .m = m, .R = g->R - o->bg0, .d = g->d };
+	B.delta = B.R - B.d;
+	double rest[3];
+	for (int i = 0; i < 3; i++)
+		rest[i] = o->F[i] - o->Fe * g->n[i];  /* damping and friction, at G */
+	double A0 = 0, B0 = 0, B1[2] = { 0, 0 }, B2[3] = { 0, 0, 0 };
+	if (B.delta > 0 && B.c > 0) {
+		B.w0 = B.c * pow(B.delta, m) / (2 * DEM_PI * B.d);
+		B.W0 = B.c * pow(B.delta, m + 1) / (m + 1);
+		local_integrals(&B, g->x, g->y, sqrt(B.delta * (B.R + B.d)), &A0, &B0, B1, B2);
+	}
+	/* dPhi/dO = -int 2 w' (y - O) dA with y - O = (y - C) - d nf */
+	double b1[3];
+	for (int i = 0; i < 3; i++) {
+		b1[i] = B1[0] * g->u[i] + B1[1] * g->w[i];
+		F[i] = rest[i] + b1[i] - g->d * B0 * g->nf[i];
+	}
+	/* dPhi/dX_a = A0 g_a + N_a(C) (B1 - d B0 nf) + B2 g_a - d (B1 . g_a) nf */
+	const double *x = g->x, *y = g->y;
+	for (int a = 0; a < 3; a++) {
+		int j = (a + 1) % 3, k = (a + 2) % 3;
+		double gx = (y[j] - y[k]) / g->A2, gy = (x[k] - x[j]) / g->A2;
+		double Nc = (x[j] * y[k] - x[k] * y[j]) / g->A2;
+		double px = A0 * gx + Nc * B1[0] + B2[0] * gx + B2[1] * gy;
+		double py = A0 * gy + Nc * B1[1] + B2[1] * gx + B2[2] * gy;
+		double pn = -g->d * (Nc * B0 + B1[0] * gx + B1[1] * gy);
+		for (int i = 0; i < 3; i++)
+			Fnode[a][i] = -g->N[a] * rest[i] - (px * g->u[i] + py * g->w[i] + pn * g->nf[i]);
+	}
+	if (Phi)
+		*Phi = A0;
 }
 
 int dem_contact_sphere_facet(const dem_contact_model_t *cm, const dem_sphere_t *s,
@@ -195,8 +394,9 @@ int dem_contact_sphere_facet(const dem_contact_model_t *cm, const dem_sphere_t *
 	k.meff = meff;
 	k.dt = dt;
 	cm->kernel(cm, &k, st, &out->c);
-	for (int a = 0; a < 3; a++)
-		for (int i = 0; i < 3; i++)
-			out->Fnode[a][i] = -g->N[a] * out->c.F[i];
+	double F[3];
+	dem_facet_forces(g, &out->c, cm->m, F, out->Fnode, NULL);
+	for (int i = 0; i < 3; i++)
+		out->c.F[i] = F[i];
 	return 1;
 }

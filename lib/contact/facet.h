@@ -28,6 +28,35 @@
  * the thesis keeps G the centroid of the area; but then the facets of a
  * flat surface push the sphere sideways, sum V_i (G_i - C) != 0, so we
  * take the volume's centroid, for which the sum vanishes.)
+ *
+ * Neither force derives from a potential (beyond the thesis).  A sphere
+ * pressed into a dimpled, deforming surface can then gain energy without
+ * bound: on a soft block under a large slow sphere the area factor with
+ * m = 1.5 did for alpha 2 to 10, whatever the step.  The third scheme,
+ * potential, spreads the law over the surface as an energy per unit area
+ * that depends only on a surface point's distance q from O:
+ *     Phi = int over the facet of w(q) dA,  w(q) = F(R - q) / (2 pi q)
+ * (F the law's branch, zero for q >= R).  On a flat surface at distance d
+ * this integrates to U(R - d), the law's energy (pi int_{d^2}^{R^2} w ds
+ * with s = q^2, differentiated in d, gives F back), so a tiled plane gives
+ * the law exactly, and each facet's share is local: a point's energy
+ * depends on where it is, not on the facet's plane extended to C (taking
+ * gamma U(delta) for Phi instead makes the tilt of a small facet far from
+ * C cost the sphere's whole force times that distance: far too stiff for
+ * the step, it blew up the soft block).  The elastic forces are minus the
+ * gradient of Phi with respect to O and to each node, exact integrals
+ * over the area inside the circle (the integrand vanishes on the circle,
+ * so the moving rim adds nothing):
+ *     on the sphere  F_O = int 2 w'(s) (y - O) dA
+ *     on node a      F_a = -int [w grad N_a + N_a 2 w'(s) (y - O)] dA
+ * (w' = dw/ds; grad N_a the in-plane gradient of the area coordinate,
+ * from the facet's stretch).  They sum to zero with zero moment, do the
+ * work Phi loses, and each point pushes along the line to O, like a
+ * pressure on the sphere.  In full contact they are the thesis's force (F
+ * n through C, to the nodes by area coordinates).  The integrals are
+ * closed on the circle's sectors and 1D quadrature along the chords (see
+ * facet.c), so the scheme costs more only in partial contact.  Damping and
+ * friction act at G, as in the area scheme, with gamma by area.
  */
 #ifndef DEM_CONTACT_FACET_H
 #define DEM_CONTACT_FACET_H
@@ -43,11 +72,18 @@ typedef struct dem_facet_geom {
 	double n[3];   /* unit direction G -> O */
 	double N[3];   /* area coordinates of G in the facet */
 	int full;      /* 1: the circle lies inside the facet */
+	/* the potential scheme in partial contact (pot = 1; else unset) */
+	int pot;
+	double R, d;              /* the sphere's radius, O's distance from the plane */
+	double nf[3], u[3], w[3]; /* the facet's frame: normal, in-plane axes */
+	double x[3], y[3];        /* the nodes in (u, w) relative to C */
+	double A2;                /* twice the facet's area */
 } dem_facet_geom_t;
 
 /* Overlap of the sphere (O, R) with the facet X[3][3]: returns 1 and fills g
  * when they overlap (0 < delta, the centre in front of the facet's plane,
- * S_p > 0), 0 otherwise.  scheme: DEM_PARTIAL_AREA or DEM_PARTIAL_VOLUME. */
+ * S_p > 0), 0 otherwise.  scheme: DEM_PARTIAL_AREA, _VOLUME or _POTENTIAL
+ * (as _AREA, and in partial contact the derivatives of S_p as well). */
 int dem_facet_geom(const double O[3], double R, const double X[3][3], int scheme,
                    dem_facet_geom_t *g);
 
@@ -57,6 +93,17 @@ int dem_facet_geom(const double O[3], double R, const double X[3][3], int scheme
  * other polygon users. */
 void dem_circle_triangle(const double x[3], const double y[3], double r,
                          double *S, double *Mx, double *My, double *J);
+
+/* The forces of one pair from the kernel's output o (for the pair's
+ * geometry g): on the sphere (F) and on the facet's nodes (Fnode; the sum
+ * of all four is zero).  For the area and volume schemes, and in full
+ * contact, o->F on the sphere and -N_a o->F on node a; with the potential
+ * scheme in partial contact, the elastic part o->Fe n is replaced by the
+ * gradient of Phi (above).  m: the law's exponent.  Phi, when not NULL,
+ * gets the elastic energy: Phi above, or gamma times the branch's energy
+ * at delta. */
+void dem_facet_forces(const dem_facet_geom_t *g, const dem_contact_out_t *o, double m,
+                      double F[3], double Fnode[3][3], double *Phi);
 
 /* A rigid sphere (the contactor). */
 typedef struct dem_sphere {

@@ -103,6 +103,7 @@ kernel(const dem_contact_model_t *cm, const dem_contact_kin_t *k, dem_contact_st
 	const double m = cm->m, d = k->delta, kn = k->kn, g = k->gamma;
 	const double dm = lawpow(law, m, d);  /* delta^m */
 	double F;
+	o->bc = kn, o->bg0 = 0;
 	if (damp == DEM_DAMP_HYSTERESIS) {
 		/* Eqs. 3.63-3.64: loading on k_n delta^m; below the largest
 		 * overlap, the steeper k'_n (delta - delta_0)^m, zero below delta_0 */
@@ -112,6 +113,7 @@ kernel(const dem_contact_model_t *cm, const dem_contact_kin_t *k, dem_contact_st
 		} else {
 			double x = d - s->dmax * cm->shift;
 			F = x > 0 ? kn * cm->p.unload * lawpow(law, m, x) : 0;
+			o->bc = kn * cm->p.unload, o->bg0 = s->dmax * cm->shift;
 		}
 	} else {
 		F = kn * dm;
@@ -181,7 +183,8 @@ int dem_contact_model_init(dem_contact_model_t *cm, const dem_contact_param_t *p
 		return dem_error_set(e, DEM_EINPUT, "contact model: friction coefficient mu = %g: expected a finite number >= 0", p->mu);
 	if (p->friction && !(p->kt_ratio >= 0 && isfinite(p->kt_ratio)))
 		return dem_error_set(e, DEM_EINPUT, "contact model: tangential stiffness ratio %g: expected >= 0", p->kt_ratio);
-	if (p->partial != DEM_PARTIAL_AREA && p->partial != DEM_PARTIAL_VOLUME)
+	if (p->partial != DEM_PARTIAL_AREA && p->partial != DEM_PARTIAL_VOLUME &&
+	    p->partial != DEM_PARTIAL_POTENTIAL)
 		return dem_error_set(e, DEM_EINPUT, "contact model: unknown partial contact scheme %d", p->partial);
 	cm->p = *p;
 	cm->m = m;
@@ -209,7 +212,8 @@ int dem_contact_model_init(dem_contact_model_t *cm, const dem_contact_param_t *p
 		w += snprintf(b + w, n - w, ", hysteresis k'/k=%g", p->unload);
 	if (p->friction)
 		w += snprintf(b + w, n - w, ", friction mu=%g", p->mu);
-	snprintf(b + w, n - w, ", partial %s", p->partial == DEM_PARTIAL_AREA ? "area" : "volume");
+	static const char *const partial[] = { "area", "volume", "potential" };
+	snprintf(b + w, n - w, ", partial %s", partial[p->partial]);
 	return DEM_OK;
 }
 

@@ -93,7 +93,8 @@
 #include "core/error.h"
 
 enum { DEM_DAMP_NONE = 0, DEM_DAMP_VISCOUS = 1, DEM_DAMP_HYSTERESIS = 2 };
-enum { DEM_PARTIAL_AREA = 0, DEM_PARTIAL_VOLUME = 1 };  /* Eq. 3.15 / 3.16 */
+/* Eq. 3.15 / Eq. 3.16 / the area factor's potential (facet.h) */
+enum { DEM_PARTIAL_AREA = 0, DEM_PARTIAL_VOLUME = 1, DEM_PARTIAL_POTENTIAL = 2 };
 enum { DEM_SEPFIX_ON = 0, DEM_SEPFIX_OFF = 1 };          /* separation correction (above) */
 
 /* What a scene asks for.  Zero-initialise, then fill. */
@@ -105,7 +106,7 @@ typedef struct dem_contact_param {
 	int friction;     /* 0 absent, 1 present */
 	double mu;        /* Coulomb coefficient >= 0 (Eq. 3.48) */
 	double kt_ratio;  /* k_t = kt_ratio gamma K_n (Eq. 3.72); 0: the default 2/7 */
-	int partial;      /* DEM_PARTIAL_AREA or DEM_PARTIAL_VOLUME */
+	int partial;      /* DEM_PARTIAL_AREA, _VOLUME or _POTENTIAL */
 	int sepfix;       /* DEM_SEPFIX_ON (default) or DEM_SEPFIX_OFF, for rigid pairs (above) */
 } dem_contact_param_t;
 
@@ -145,6 +146,8 @@ typedef struct dem_contact_out {
 	double Fn;    /* magnitude of the normal force (gamma and damping included) */
 	double Fe;    /* its elastic part: gamma k_n delta^m, or the branch of Eq. 3.63 */
 	double Ft;    /* magnitude of the tangential force */
+	double bc;    /* the elastic branch, F = bc (delta - bg0)^m: k_n and 0 on loading, */
+	double bg0;   /* k'_n and delta_0 on unloading (Eqs. 3.63-3.64) */
 } dem_contact_out_t;
 
 typedef struct dem_contact_model dem_contact_model_t;

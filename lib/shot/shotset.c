@@ -578,11 +578,11 @@ static void shot_forces(dem_shotset_t *S, size_t s, const double *v, double dt, 
 		kin.meff = dem_contact_meff(b->M, S->fmass[S->cf[k]]) / g->gamma;
 		kin.dt = dt;
 		S->cm.kernel(&S->cm, &kin, &S->cs[k], &o);
-		for (int a = 0; a < 3; a++)
-			for (int i = 0; i < 3; i++)
-				po->Fnode[a][i] = -g->N[a] * o.F[i];
+		double F[3];
+		dem_facet_forces(g, &o, S->cm.m, F, po->Fnode, NULL);
+
 		for (int i = 0; i < 3; i++)
-			b->F[i] += o.F[i], T[i] += o.T[i];
+			b->F[i] += F[i], T[i] += o.T[i];
 		b->Fn += o.Fn;
 		b->Ft += o.Ft;
 		nc++;

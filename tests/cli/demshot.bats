@@ -224,6 +224,21 @@ YAML
 	[ "$a" != "$c" ]
 }
 
+@test "demshot: the potential partial contact scheme runs, is named in the log and changes the block" {
+	shot_scene
+	sed 's/  alpha: 2/  alpha: 2\n  partial: potential/' "$T/shot.yaml" > "$T/pot.yaml"
+	run --separate-stderr demshot -s "$T/shot.yaml" -o "$T/a.state" "$T/s2.txt"
+	[ "$status" -eq 0 ]
+	run --separate-stderr demshot -s "$T/pot.yaml" -o "$T/p.state" "$T/s2.txt"
+	echo "$stderr"
+	[ "$status" -eq 0 ]
+	grep -q "contact law m=1.5, partial potential" <<< "$stderr"
+	a=$(demprofile "$T/a.state" | grep -v '^#')
+	p=$(demprofile "$T/p.state" | grep -v '^#')
+	[ -n "$p" ]
+	[ "$a" != "$p" ]
+}
+
 @test "demshot: lambda above 0.3 warns, above 0.5 is refused unless forced" {
 	shot_scene
 	run --separate-stderr demshot -s "$T/shot.yaml" --lambda 0.4 -q -o "$T/w.state" "$T/s2.txt"

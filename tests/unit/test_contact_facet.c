@@ -24,6 +24,7 @@
 #include <string.h>
 
 #include "contact/facet.h"
+#include "contact/model.h"
 #include "contact/sphere.h"
 #include "core/consts.h"
 
@@ -312,11 +313,15 @@ static void slide(double b_over_h, int scheme, double *worst_gamma, double *wors
 			assert_true(fabs(gs - 1) < 1e-9);
 			for (int i = 0; i < 3; i++) {
 				assert_true(fabs(Fn[i] + F[i]) < 1e-9 * Ffull);
-				assert_true(fabs(Mn[i] - MG[i]) < 1e-9 * Ffull * h * NQ);
+				/* the potential's forces act along the lines to O, not at G */
+				if (scheme != DEM_PARTIAL_POTENTIAL)
+					assert_true(fabs(Mn[i] - MG[i]) < 1e-9 * Ffull * h * NQ);
 			}
-			/* the normal force: full contact within delta/R (the O-G tilt) */
-			assert_true(fabs(F[2] - Ffull) <= delta / R * Ffull);
-			assert_true(hypot(F[0], F[1]) <= delta / R * Ffull);
+			/* the normal force: full contact within delta/R (the O-G tilt);
+			 * the potential's is the law's, to its quadrature */
+			double tol = scheme == DEM_PARTIAL_POTENTIAL ? 1e-6 : delta / R;
+			assert_true(fabs(F[2] - Ffull) <= tol * Ffull);
+			assert_true(hypot(F[0], F[1]) <= tol * Ffull);
 			if (prev > 0)
 				*worst_step = fmax(*worst_step, fabs(F[2] - prev) / prev);
 			prev = F[2];
@@ -329,12 +334,13 @@ static void test_tiled_surface(void **state)
 {
 	(void)state;
 	double ratios[3] = { 2.5, 0.8, 0.3 };  /* contact radius over facet size */
-	for (int sc = 0; sc < 2; sc++)
+	static const char *const name[] = { "area", "volume", "potential" };
+	for (int sc = 0; sc < 3; sc++)
 		for (int r = 0; r < 3; r++) {
 			double wg = 0, ws = 0;
 			slide(ratios[r], sc, &wg, &ws);
 			print_message("tiled surface, b/h = %.1f, %s: |sum gamma - 1| <= %.1e, largest force step %.1e\n",
-			              ratios[r], sc ? "volume" : "area", wg, ws);
+			              ratios[r], name[sc], wg, ws);
 		}
 }
 
@@ -412,6 +418,109 @@ static void test_sphere_sphere(void **state)
 	assert_true(st.dmax == 0);
 }
 
+/* The potential scheme (facet.h): the elastic forces on the sphere and on
+ * the three nodes are minus the gradient of Phi = gamma U(delta), against
+ * central differences of Phi itself, for random partial contacts of a
+ * tilted facet (the circle across one edge, two, a vertex; the centre
+ * inside and outside the facet); the four forces sum to zero with zero
+ * moment; in full contact they are the area scheme's.  The kernel is the
+ * power law alone (model.h), so o.F = o.Fe n and Phi = gamma k delta^(m+1)
+ * / (m + 1). */
+static double potential_phi(const dem_contact_model_t *cm, const double O[3], double R,
+                            const double X[3][3])
+{
+	dem_sphere_t sp = { .R = R, .kn = dem_law_kn(&cm->p.law, R) };
+	memcpy(sp.x, O, sizeof sp.x);
+	dem_contact_state_t st = { 0 };
+	dem_facet_out_t out;
+	if (!dem_contact_sphere_facet(cm, &sp, X, NULL, 1, 1e-3, &st, &out))
+		return 0;
+	double F[3], Fn[3][3], Phi;
+	dem_facet_forces(&out.g, &out.c, cm->m, F, Fn, &Phi);
+	return Phi;
+}
+
+static void test_potential_gradient(void **state)
+{
+	(void)state;
+	unsigned long seed = 7;
+	const double R = 1, ms[] = { 1, 1.5, 2 };
+	int partial = 0, full = 0;
+	double worst = 0, worst_sum = 0, worst_mom = 0;
+	for (int c = 0; c < 600; c++) {
+		double m = ms[c % 3];
+		dem_contact_param_t p = { 0 };
+		dem_error_t e = { 0 };
+		assert_int_equal(dem_law_init(&p.law, 2, 1, m, &e), DEM_OK);
+		p.partial = DEM_PARTIAL_POTENTIAL;
+		dem_contact_model_t cm;
+		assert_int_equal(dem_contact_model_init(&cm, &p, &e), DEM_OK);
+		/* a facet of size about the contact circle's, tilted at random */
+		/* facets from a tenth of the contact circle's radius to twice it */
+		double X[3][3], O[3], sz = c % 2 ? 0.6 : 0.06;
+		for (int a = 0; a < 3; a++)
+			for (int i = 0; i < 3; i++)
+				X[a][i] = sz * (urand(&seed) - 0.5) + (i == 2 ? 0 : 0.5 * sz * ((a == 1) * (i == 0) + (a == 2) * (i == 1)));
+		double e1[3], e2[3], nf[3];
+		for (int i = 0; i < 3; i++)
+			e1[i] = X[1][i] - X[0][i], e2[i] = X[2][i] - X[0][i];
+		nf[0] = e1[1] * e2[2] - e1[2] * e2[1];
+		nf[1] = e1[2] * e2[0] - e1[0] * e2[2];
+		nf[2] = e1[0] * e2[1] - e1[1] * e2[0];
+		double ln = sqrt(nf[0] * nf[0] + nf[1] * nf[1] + nf[2] * nf[2]);
+		double d = R * (1 - 0.02 - 0.1 * urand(&seed));  /* delta 0.02-0.12 R: b 0.2-0.5 R */
+		for (int i = 0; i < 3; i++)
+			O[i] = (X[0][i] + X[1][i] + X[2][i]) / 3 + d * nf[i] / ln + 1.0 * (urand(&seed) - 0.5) * (i < 2);
+		dem_sphere_t sp = { .R = R, .kn = dem_law_kn(&p.law, R) };
+		memcpy(sp.x, O, sizeof O);
+		dem_contact_state_t st = { 0 };
+		dem_facet_out_t out;
+		if (!dem_contact_sphere_facet(&cm, &sp, (const double (*)[3])X, NULL, 1, 1e-3, &st, &out))
+			continue;
+		if (out.g.full) {
+			/* the area scheme's forces */
+			full++;
+			for (int i = 0; i < 3; i++)
+				assert_true(fabs(out.c.F[i] - out.c.Fe * out.g.n[i]) <= 1e-14 * out.c.Fe);
+			continue;
+		}
+		partial++;
+		/* central differences of Phi, step 1e-6 R */
+		const double hh = 1e-6 * sz;
+		double Fs = fabs(out.c.Fe) + 1e-300, sum[3] = { 0 }, mom[3] = { 0 };
+		for (int body = 0; body < 4; body++) {
+			const double *f = body == 0 ? out.c.F : out.Fnode[body - 1];
+			const double *at = body == 0 ? O : X[body - 1];
+			for (int i = 0; i < 3; i++) {
+				double Op[3], Xp[3][3];
+				memcpy(Op, O, sizeof O);
+				memcpy(Xp, X, sizeof X);
+				double *q = body == 0 ? &Op[i] : &Xp[body - 1][i];
+				*q += hh;
+				double up = potential_phi(&cm, Op, R, (const double (*)[3])Xp);
+				*q -= 2 * hh;
+				double dn = potential_phi(&cm, Op, R, (const double (*)[3])Xp);
+				double fd = -(up - dn) / (2 * hh);
+				worst = fmax(worst, fabs(f[i] - fd) / Fs);
+				sum[i] += f[i];
+			}
+			mom[0] += at[1] * f[2] - at[2] * f[1];
+			mom[1] += at[2] * f[0] - at[0] * f[2];
+			mom[2] += at[0] * f[1] - at[1] * f[0];
+		}
+		for (int i = 0; i < 3; i++) {
+			worst_sum = fmax(worst_sum, fabs(sum[i]) / Fs);
+			worst_mom = fmax(worst_mom, fabs(mom[i]) / (Fs * R));
+		}
+	}
+	printf("# potential: %d partial, %d full contacts; force - FD gradient <= %.2g Fe, "
+	       "sum <= %.2g Fe, moment <= %.2g Fe R\n", partial, full, worst, worst_sum, worst_mom);
+	assert_true(partial > 200);
+	assert_true(worst < 1e-5);
+	assert_true(worst_sum < 1e-11);
+	assert_true(worst_mom < 1e-11);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -421,6 +530,7 @@ int main(void)
 		cmocka_unit_test(test_tiled_surface),
 		cmocka_unit_test(test_volume_scheme),
 		cmocka_unit_test(test_sphere_sphere),
+		cmocka_unit_test(test_potential_gradient),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
