@@ -4,11 +4,11 @@
 out=$1
 tsv=$out/pass.tsv
 [ -r "$tsv" ] || { echo "pass-report.sh: $tsv: cannot read" >&2; exit 4; }
+. "$(dirname "$0")/../lib.sh"
 # friction absent vs friction 0: the state rows (the header holds the
 # provenance, which differs) must be identical
-rows() { off=$(gzip -dc "$1" | grep -abo -m1 '^# data' | cut -d: -f1); gzip -dc "$1" | tail -c +$((off + 1)) | md5sum | cut -c1-32; }
 same=no
-[ "$(rows "$out/frictionless.state")" = "$(rows "$out/mu0.state")" ] && same=yes
+[ "$(state_rows "$out/frictionless.state")" = "$(state_rows "$out/mu0.state")" ] && same=yes
 awk -F'\t' -v same="$same" '
 NR == 1 { next }
 { n++; c[n] = $1; for (i = 2; i <= NF; i++) v[$1, i] = $i }
