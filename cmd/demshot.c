@@ -230,7 +230,7 @@ static int read_load(dem_scene_t *s, struct settings *st, dem_error_t *e)
 static int read_shots(dem_scene_t *s, int accuracy, struct settings *st, dem_error_t *e)
 {
 	static const char *const laws[] = {"power", "hertz", NULL};
-	static const char *const partials[] = {"area", "volume", "potential", NULL};
+	static const char *const partials[] = {"potential", "area", "volume", NULL};
 	dem_contact_param_t p = {0};
 	double m, alpha, h = HUGE_VAL;
 	int law, partial;
@@ -248,7 +248,7 @@ static int read_shots(dem_scene_t *s, int accuracy, struct settings *st, dem_err
 	    dem_scene_quantity(s, "contact.m", DEM_DIM_NONE, DEM_LAW_M_HERTZ, 1, 4, &m, e) ||
 	    dem_scene_quantity(s, "contact.alpha", DEM_DIM_NONE, 2.5, DEM_SCENE_GT0,
 			       HUGE_VAL, &alpha, e) ||
-	    dem_scene_choice(s, "contact.partial", partials, DEM_PARTIAL_AREA, &partial, e) ||
+	    dem_scene_choice(s, "contact.partial", partials, DEM_PARTIAL_POTENTIAL, &partial, e) ||
 	    dem_scene_quantity(s, "run.lambda", DEM_DIM_NONE,
 			       accuracy == DEM_ACCURACY_FINE ? 0.1 : DEM_DT_LAMBDA_DEFAULT,
 			       -HUGE_VAL, HUGE_VAL, &st->so.lambda, e) ||
@@ -930,7 +930,7 @@ static int run_pass(dem_fe_t *fe, dem_shotset_t *S, const struct settings *st,
 		return rc;
 	for (;;) {
 		double dt, t = dem_fe_time(fe);
-		if ((rc = dem_shotset_prepare(S, dem_fe_coords(fe), dem_fe_dt(fe), &dt, e)) ||
+		if ((rc = dem_shotset_prepare(S, dem_fe_coords(fe), dem_fe_velocity(fe), dem_fe_dt(fe), &dt, e)) ||
 		    (rc = dem_fe_step(fe, dt, e)))
 			return rc;
 		if (fw) {

@@ -18,20 +18,14 @@ typedef struct overlap {
 	double th, sx, sy, s2, c2;
 } overlap_t;
 
-/* The signed piece of one edge, A -> B (relative to the circle's centre):
- * the circle's part inside the triangle (0, A, B), signed by its
- * orientation.  The edge is cut where it crosses the circle; a stretch
- * inside the circle gives the triangle (0, P, Q), a stretch outside the
- * circular sector between the directions of P and Q, whose arc is the
- * arc's share of this piece. */
-static void edge_piece(double ax, double ay, double bx, double by, double r, overlap_t *o)
+/* The stretches of the edge A + t (dx, dy), t in [0, 1], against the circle
+ * (centre 0, radius r): [t0, t1] outside, [t1, t2] inside, [t2, t3]
+ * outside, with t1 <= t2 the crossings clamped to [0, 1]; no crossing (or
+ * a tangent): all outside. */
+static void edge_cuts(double ax, double ay, double dx, double dy, double r, double t[4])
 {
-	double dx = bx - ax, dy = by - ay;
 	double qa = dx * dx + dy * dy, qb = ax * dx + ay * dy, qc = ax * ax + ay * ay - r * r;
-	/* the edge's stretches: [0, t1] outside, [t1, t2] inside, [t2, 1]
-	 * outside, with t1 < t2 the crossings of the circle clamped to [0, 1];
-	 * no crossing (or a tangent): all outside */
-	double t[4] = { 0, 0, 0, 1 };
+	t[0] = t[1] = t[2] = 0, t[3] = 1;
 	double disc = qb * qb - qa * qc;
 	if (qa > 0 && disc > 0) {
 		double sq = sqrt(disc);
@@ -45,6 +39,18 @@ static void edge_piece(double ax, double ay, double bx, double by, double r, ove
 		t[1] = fmin(fmax(t1, 0), 1);
 		t[2] = fmin(fmax(t2, 0), 1);
 	}
+}
+
+/* The signed piece of one edge, A -> B (relative to the circle's centre):
+ * the circle's part inside the triangle (0, A, B), signed by its
+ * orientation.  The edge is cut where it crosses the circle; a stretch
+ * inside the circle gives the triangle (0, P, Q), a stretch outside the
+ * circular sector between the directions of P and Q, whose arc is the
+ * arc's share of this piece. */
+static void edge_piece(double ax, double ay, double bx, double by, double r, overlap_t *o)
+{
+	double dx = bx - ax, dy = by - ay, t[4];
+	edge_cuts(ax, ay, dx, dy, r, t);
 	double r2 = r * r;
 	for (int i = 0; i < 3; i++) {
 		if (!(t[i + 1] > t[i]))
@@ -219,17 +225,24 @@ typedef struct branch {
 	double W0;                 /* W(delta) = c delta^(m+1) / (m+1) */
 } branch_t;
 
-static inline double br_W(const branch_t *B, double g)
+/* g^m, without pow() for the named laws */
+static inline double br_pow(double m, double g)
 {
-	return g > 0 ? B->c * pow(g, B->m + 1) / (B->m + 1) : 0;
+	return m == 1.0 ? g : m == 1.5 ? g * sqrt(g) : m == 2.0 ? g * g : pow(g, m);
 }
 
-/* w(q^2) = F(R' - q) / (2 pi q): the energy per unit area of a surface
- * point at distance q from O (see facet.h) */
-static inline double br_w(const branch_t *B, double q)
+/* At distance q from O: w(q^2) = F(R' - q) / (2 pi q), the energy per unit
+ * area of a surface point there (see facet.h), and W(R' - q) */
+static inline void br_wW(const branch_t *B, double q, double *w, double *W)
 {
 	double g = B->R - q;
-	return g > 0 ? B->c * pow(g, B->m) / (2 * DEM_PI * q) : 0;
+	if (!(g > 0)) {
+		*w = *W = 0;
+		return;
+	}
+	double F = B->c * br_pow(B->m, g);
+	*w = F / (2 * DEM_PI * q);
+	*W = F * g / (B->m + 1);
 }
 
 /* The integrals over the part of the circle (centre C = 0, radius b) inside
@@ -249,24 +262,11 @@ static void local_integrals(const branch_t *B, const double x[3], const double y
 {
 	*A0 = *B0 = 0;
 	B1[0] = B1[1] = B2[0] = B2[1] = B2[2] = 0;
-	double b2 = b * b, d2 = B->d * B->d;
+	double d2 = B->d * B->d;
 	for (int e = 0; e < 3; e++) {
 		int f = (e + 1) % 3;
-		double ax = x[e], ay = y[e], dx = x[f] - ax, dy = y[f] - ay;
-		double qa = dx * dx + dy * dy, qb = ax * dx + ay * dy, qc = ax * ax + ay * ay - b2;
-		double t[4] = { 0, 0, 0, 1 };
-		double disc = qb * qb - qa * qc;
-		if (qa > 0 && disc > 0) {
-			double sq = sqrt(disc);
-			double q = qb > 0 ? -(qb + sq) : -(qb - sq);
-			double t1 = q / qa, t2 = q != 0 ? qc / q : t1;
-			if (t1 > t2) {
-				double h = t1;
-				t1 = t2, t2 = h;
-			}
-			t[1] = fmin(fmax(t1, 0), 1);
-			t[2] = fmin(fmax(t2, 0), 1);
-		}
+		double ax = x[e], ay = y[e], dx = x[f] - ax, dy = y[f] - ay, t[4];
+		edge_cuts(ax, ay, dx, dy, b, t);
 		for (int i = 0; i < 3; i++) {
 			if (!(t[i + 1] > t[i]))
 				continue;
@@ -301,8 +301,9 @@ static void local_integrals(const branch_t *B, const double x[3], const double y
 				double tt = tau * tau * (3 - 2 * tau), jac = 6 * tau * (1 - tau);
 				double yx = px + tt * ex, yy = py + tt * ey;
 				double r2 = yx * yx + yy * yy, q = sqrt(r2 + d2);
-				double wq = br_w(B, q);
-				double R0 = (B->W0 - br_W(B, B->R - q)) / (2 * DEM_PI);
+				double wq, Wq;
+				br_wW(B, q, &wq, &Wq);
+				double R0 = (B->W0 - Wq) / (2 * DEM_PI);
 				double cw = cr * gl_w[k] * jac / 2 / r2;
 				*A0 += cw * R0;
 				*B0 += cw * (wq - B->w0);
@@ -342,8 +343,9 @@ void dem_facet_forces(const dem_facet_geom_t *g, const dem_contact_out_t *o, dou
 		rest[i] = o->F[i] - o->Fe * g->n[i];  /* damping and friction, at G */
 	double A0 = 0, B0 = 0, B1[2] = { 0, 0 }, B2[3] = { 0, 0, 0 };
 	if (B.delta > 0 && B.c > 0) {
-		B.w0 = B.c * pow(B.delta, m) / (2 * DEM_PI * B.d);
-		B.W0 = B.c * pow(B.delta, m + 1) / (m + 1);
+		double F0 = B.c * br_pow(m, B.delta);
+		B.w0 = F0 / (2 * DEM_PI * B.d);
+		B.W0 = F0 * B.delta / (m + 1);
 		local_integrals(&B, g->x, g->y, sqrt(B.delta * (B.R + B.d)), &A0, &B0, B1, B2);
 	}
 	/* dPhi/dO = -int 2 w' (y - O) dA with y - O = (y - C) - d nf */

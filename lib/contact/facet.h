@@ -33,7 +33,7 @@
  * pressed into a dimpled, deforming surface can then gain energy without
  * bound: on a soft block under a large slow sphere the area factor with
  * m = 1.5 did for alpha 2 to 10, whatever the step.  The third scheme,
- * potential, spreads the law over the surface as an energy per unit area
+ * potential (the default), spreads the law over the surface as an energy per unit area
  * that depends only on a surface point's distance q from O:
  *     Phi = int over the facet of w(q) dA,  w(q) = F(R - q) / (2 pi q)
  * (F the law's branch, zero for q >= R).  On a flat surface at distance d
@@ -56,7 +56,8 @@
  * n through C, to the nodes by area coordinates).  The integrals are
  * closed on the circle's sectors and 1D quadrature along the chords (see
  * facet.c), so the scheme costs more only in partial contact.  Damping and
- * friction act at G, as in the area scheme, with gamma by area.
+ * friction act at G, as in the area scheme, with gamma by area.  It is the
+ * default (DEM_PARTIAL_POTENTIAL = 0).
  */
 #ifndef DEM_CONTACT_FACET_H
 #define DEM_CONTACT_FACET_H

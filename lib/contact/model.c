@@ -212,18 +212,23 @@ int dem_contact_model_init(dem_contact_model_t *cm, const dem_contact_param_t *p
 		w += snprintf(b + w, n - w, ", hysteresis k'/k=%g", p->unload);
 	if (p->friction)
 		w += snprintf(b + w, n - w, ", friction mu=%g", p->mu);
-	static const char *const partial[] = { "area", "volume", "potential" };
+	static const char *const partial[] = { "potential", "area", "volume" };
 	snprintf(b + w, n - w, ", partial %s", partial[p->partial]);
 	return DEM_OK;
+}
+
+double dem_contact_secant(const dem_contact_model_t *cm, double kn, double M, double delta,
+                          double vn)
+{
+	double u = delta > 0 ? delta : 0;
+	double umax = dem_dt_umax_state(cm->m, kn, M, u, vn);
+	return dem_dt_secant(cm->m, kn, umax, u) * cm->dt_factor;
 }
 
 double dem_contact_dt(const dem_contact_model_t *cm, double kn, double M, double delta,
                       double vn, double lambda)
 {
-	double u = delta > 0 ? delta : 0;
-	double umax = dem_dt_umax_state(cm->m, kn, M, u, vn);
-	double K = dem_dt_secant(cm->m, kn, umax, u) * cm->dt_factor;
-	return dem_dt_step(lambda, M, K);
+	return dem_dt_step(lambda, M, dem_contact_secant(cm, kn, M, delta, vn));
 }
 
 /* ---- Separation correction (beyond the thesis; see model.h) ------------ */

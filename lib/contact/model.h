@@ -17,7 +17,10 @@
  * contact overlap delta (the overlap with the facet's plane, Fig. 3.7) and
  * the partial contact factor gamma (Eqs. 3.9, 3.15-3.16): the whole force,
  * damping and tangential stiffness included, is scaled by gamma, so the
- * facets of a flat surface sum to the full contact.
+ * facets of a flat surface sum to the full contact.  (With the potential
+ * scheme, facet.h replaces the elastic part o->Fe n of a partial contact
+ * by the gradient of its energy, from the branch bc, bg0 the kernel
+ * reports.)
  *
  * State kept per contact pair, between steps (dem_contact_state_t): the
  * tangential force and the normal of the previous step, the largest
@@ -93,8 +96,9 @@
 #include "core/error.h"
 
 enum { DEM_DAMP_NONE = 0, DEM_DAMP_VISCOUS = 1, DEM_DAMP_HYSTERESIS = 2 };
-/* Eq. 3.15 / Eq. 3.16 / the area factor's potential (facet.h) */
-enum { DEM_PARTIAL_AREA = 0, DEM_PARTIAL_VOLUME = 1, DEM_PARTIAL_POTENTIAL = 2 };
+/* partial contact (facet.h): the energy's gradient (the default; beyond
+ * the thesis), the area factor (Eq. 3.15), the volume factor (Eq. 3.16) */
+enum { DEM_PARTIAL_POTENTIAL = 0, DEM_PARTIAL_AREA = 1, DEM_PARTIAL_VOLUME = 2 };
 enum { DEM_SEPFIX_ON = 0, DEM_SEPFIX_OFF = 1 };          /* separation correction (above) */
 
 /* What a scene asks for.  Zero-initialise, then fill. */
@@ -106,7 +110,7 @@ typedef struct dem_contact_param {
 	int friction;     /* 0 absent, 1 present */
 	double mu;        /* Coulomb coefficient >= 0 (Eq. 3.48) */
 	double kt_ratio;  /* k_t = kt_ratio gamma K_n (Eq. 3.72); 0: the default 2/7 */
-	int partial;      /* DEM_PARTIAL_AREA, _VOLUME or _POTENTIAL */
+	int partial;      /* DEM_PARTIAL_POTENTIAL (0), _AREA or _VOLUME */
 	int sepfix;       /* DEM_SEPFIX_ON (default) or DEM_SEPFIX_OFF, for rigid pairs (above) */
 } dem_contact_param_t;
 
@@ -182,6 +186,12 @@ void dem_contact_state_reset(dem_contact_state_t *s);
  * to limit the step (no speed, no overlap, m > 1). */
 double dem_contact_dt(const dem_contact_model_t *cm, double kn, double M, double delta,
                       double vn, double lambda);
+
+/* The secant stiffness K_L behind dem_contact_dt (same arguments): the
+ * step is lambda 2 sqrt(M / K_L).  For drivers that sum the stiffness of
+ * several contacts on one body. */
+double dem_contact_secant(const dem_contact_model_t *cm, double kn, double M, double delta,
+                          double vn);
 
 /* One step of the friction model alone (Eqs. 3.57-3.62), for tests and for
  * drivers with their own normal force: co-rotate s->Ft from s->n to n and

@@ -21,6 +21,7 @@
 typedef struct pair_out {
 	dem_facet_geom_t g;       /* geometry at x_n (when touch) */
 	double Fnode[3][3];
+	double K;                 /* the pair's stiffness gamma K_L (Box 3.1), for the nodes' step */
 	int touch;
 } pair_out_t;
 
@@ -37,6 +38,7 @@ struct dem_shotset {
 	size_t nf, ntop;
 	uint32_t (*fnode)[3];     /* facet nodes, anticlockwise from above */
 	double *fmass;            /* facet masses */
+	double *Knode;            /* contact stiffness summed on each node this step (zero between) */
 	uint32_t *top;            /* surface nodes */
 	double *xtop;             /* their coordinates at the last build */
 
@@ -178,7 +180,8 @@ int dem_shotset_create(dem_shotset_t **Sp, const dem_mesh_t *mesh, const double 
 	S->ws = dem_detect_ws_new();
 	S->off = calloc(1, sizeof *S->off);
 	S->off_old = calloc(1, sizeof *S->off_old);
-	if (!S->ws || !S->off || !S->off_old || facets_build(S, e)) {
+	S->Knode = calloc(mesh->nn, sizeof *S->Knode);
+	if (!S->ws || !S->off || !S->off_old || !S->Knode || facets_build(S, e)) {
 		dem_shotset_free(S);
 		return e->code ? e->code : dem_error_nomem(e, "shots");
 	}
@@ -190,7 +193,7 @@ void dem_shotset_free(dem_shotset_t *S)
 {
 	if (!S)
 		return;
-	free(S->fnode), free(S->fmass), free(S->top), free(S->xtop);
+	free(S->fnode), free(S->fmass), free(S->Knode), free(S->top), free(S->xtop);
 	free(S->b), free(S->xshot), free(S->T);
 	free(S->off), free(S->off_old), free(S->cf), free(S->cf_old);
 	free(S->cs), free(S->cs_old), free(S->po);
@@ -492,11 +495,50 @@ static int rebuild(dem_shotset_t *S, const double *x, dem_error_t *e)
 
 /* ---- the step ----------------------------------------------------------- */
 
+/* Whether a shot (centre O, velocity vs, radius R) whose enlarged sphere
+ * meets the box of the facet X (node velocities V, NULL: at rest) may
+ * touch it within the step dt: the facet's plane cuts the sphere, or it is
+ * nearer than twice the speed at which the shot and the nearest-closing
+ * facet node approach along the facet's normal, times dt.  A shot rising
+ * out of its dimple is then no longer held at the contact step while its
+ * surface springs back more slowly than it leaves. */
+static int facet_near(const double O[3], const double vs[3], double R, const double X[3][3],
+		      const double (*V)[3], double dt)
+{
+	double a[3], c[3], n[3];
+	for (int i = 0; i < 3; i++)
+		a[i] = X[1][i] - X[0][i], c[i] = X[2][i] - X[0][i];
+	n[0] = a[1] * c[2] - a[2] * c[1];
+	n[1] = a[2] * c[0] - a[0] * c[2];
+	n[2] = a[0] * c[1] - a[1] * c[0];
+	double l = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+	if (!(l > 0))
+		return 1;
+	for (int i = 0; i < 3; i++)
+		n[i] /= l;
+	double gap = (O[0] - X[0][0]) * n[0] + (O[1] - X[0][1]) * n[1] + (O[2] - X[0][2]) * n[2] - R;
+	if (gap < 0)
+		return 1;
+	double close = 0;  /* the largest closing speed along n */
+	for (int k = 0; k < 3; k++) {
+		double w = 0;
+		for (int i = 0; i < 3; i++)
+			w += (vs[i] - (V ? V[k][i] : 0)) * n[i];
+		close = fmax(close, -w);
+	}
+	return gap < 2 * close * dt;
+}
+
 /* Geometry of shot s against its candidate facets at x: which touch (po),
  * and its step limit (Box 3.1 per touching pair; for a shot that touches
  * nothing but may within reach, the step against the lightest facet in
- * reach with gamma = 1, the start of a contact). */
-static void shot_geometry(dem_shotset_t *S, size_t s, const double *x, double reach)
+ * reach with gamma = 1, the start of a contact).  A facet is in reach when
+ * the sphere enlarged by reach meets its box and its plane and the shot
+ * moves toward the plane: the box alone kept a shot rising out of its
+ * dimple at the contact step for the rest of the pass (the dimple's tilted
+ * facets have tall boxes, and their planes cut the shot). */
+static void shot_geometry(dem_shotset_t *S, size_t s, const double *x, const double *v,
+			  double dt_max, double reach)
 {
 	dem_shot_body_t *b = &S->b[s];
 	double R = b->R, R2 = R * R, Rr2 = (R + reach) * (R + reach), dtmin = HUGE_VAL;
@@ -521,20 +563,63 @@ static void shot_geometry(dem_shotset_t *S, size_t s, const double *x, double re
 		if (d2 >= Rr2)
 			continue;
 		if (d2 >= R2 || !dem_facet_geom(b->x, R, (const double (*)[3])X, S->cm.p.partial, &po->g)) {
-			mnear = fmin(mnear, S->fmass[S->cf[k]]);
+			double V[3][3];
+			if (v)
+				for (int a = 0; a < 3; a++)
+					for (int i = 0; i < 3; i++)
+						V[a][i] = v[3 * (size_t)fn[a] + i];
+			if (facet_near(b->x, b->v, R, (const double (*)[3])X, v ? (const double (*)[3])V : NULL,
+				       dt_max))
+				mnear = fmin(mnear, S->fmass[S->cf[k]]);
 			continue;
 		}
 		po->touch = 1;
 		nc++;
 		double mass = dem_contact_meff(b->M, S->fmass[S->cf[k]]) / po->g.gamma;
 		double vn = -(b->v[0] * po->g.n[0] + b->v[1] * po->g.n[1] + b->v[2] * po->g.n[2]);
-		dtmin = fmin(dtmin, dem_contact_dt(&S->cm, b->kn, mass, po->g.delta, vn, S->o.lambda));
+		double K = dem_contact_secant(&S->cm, b->kn, mass, po->g.delta, vn);
+		po->K = po->g.gamma * K;
+		dtmin = fmin(dtmin, dem_dt_step(S->o.lambda, mass, K));
 	}
 	if (nc == 0 && mnear < HUGE_VAL) {
 		double sp = sqrt(b->v[0] * b->v[0] + b->v[1] * b->v[1] + b->v[2] * b->v[2]);
 		dtmin = dem_contact_dt(&S->cm, b->kn, dem_contact_meff(b->M, mnear), 0, sp, S->o.lambda);
 	}
 	b->dt = dtmin;
+}
+
+/* The step limit of the surface nodes: each touching pair's stiffness
+ * gamma K_L goes to its facet's nodes by the area coordinates of G, as its
+ * force does, and a node carrying K in all gets lambda 2 sqrt(m / K)
+ * (Box 3.1).  The pairs' own limit (mass m_f / gamma) assumes the force
+ * spread over the facet's three nodes; where the facets around one node
+ * all press on it (a shot landing on a vertex: 4 to 8 facets, each gamma
+ * 1/8 or so, G near the node) it was up to twice too long, and the linear
+ * law gained energy at first touch.  Serial, in shot and pair order; the
+ * sums are zeroed again on the way out. */
+static double nodes_dt(dem_shotset_t *S)
+{
+	double dt = HUGE_VAL;
+	for (int pass = 0; pass < 3; pass++)
+		for (size_t k = 0; k < S->off[S->ns]; k++) {
+			const pair_out_t *po = &S->po[k];
+			if (!po->touch)
+				continue;
+			const uint32_t *fn = S->fnode[S->cf[k]];
+			for (int a = 0; a < 3; a++) {
+				uint32_t n = fn[a];
+				if (pass == 0) {
+					S->Knode[n] += po->K * po->g.N[a];
+				} else if (pass == 1) {
+					double K = S->Knode[n];
+					if (K > 0)
+						dt = fmin(dt, dem_dt_step(S->o.lambda, S->node_mass[n], K));
+				} else {
+					S->Knode[n] = 0;
+				}
+			}
+		}
+	return dt;
 }
 
 /* Forces of shot s's touching pairs (geometry from shot_geometry): its
@@ -580,7 +665,6 @@ static void shot_forces(dem_shotset_t *S, size_t s, const double *v, double dt, 
 		S->cm.kernel(&S->cm, &kin, &S->cs[k], &o);
 		double F[3];
 		dem_facet_forces(g, &o, S->cm.m, F, po->Fnode, NULL);
-
 		for (int i = 0; i < 3; i++)
 			b->F[i] += F[i], T[i] += o.T[i];
 		b->Fn += o.Fn;
@@ -625,7 +709,8 @@ static int nthreads(const dem_shotset_t *S)
 }
 
 /* Geometry of every shot at x, and the step limit. */
-static int geometry(dem_shotset_t *S, const double *x, double dt_max, dem_error_t *e)
+static int geometry(dem_shotset_t *S, const double *x, const double *v, double dt_max,
+		    dem_error_t *e)
 {
 	int rc;
 	if (need_rebuild(S, x) && (rc = rebuild(S, x, e)))
@@ -635,19 +720,19 @@ static int geometry(dem_shotset_t *S, const double *x, double dt_max, dem_error_
 	(void)nthr;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(nthr) if (nthr > 1)
 	for (size_t s = 0; s < S->ns; s++) {
-		const double *v = S->b[s].v;
-		double sp = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-		shot_geometry(S, s, x, 2 * sp * dt_max);
+		const double *vs = S->b[s].v;
+		double sp = sqrt(vs[0] * vs[0] + vs[1] * vs[1] + vs[2] * vs[2]);
+		shot_geometry(S, s, x, v, dt_max, 2 * sp * dt_max);
 	}
 	pairs_dt(S, dt_max);
-	S->dt_next = HUGE_VAL;
+	S->dt_next = nodes_dt(S);
 	for (size_t s = 0; s < S->ns; s++)
 		S->dt_next = fmin(S->dt_next, S->b[s].dt);
 	S->st.contact_s += dem_wall() - t0;
 	return DEM_OK;
 }
 
-int dem_shotset_prepare(dem_shotset_t *S, const double *x, double dt_max, double *dt,
+int dem_shotset_prepare(dem_shotset_t *S, const double *x, const double *v, double dt_max, double *dt,
 			dem_error_t *e)
 {
 	int rc;
@@ -655,7 +740,7 @@ int dem_shotset_prepare(dem_shotset_t *S, const double *x, double dt_max, double
 	S->prepared = 0;
 	if (S->ns == 0)
 		return DEM_OK;
-	if ((rc = geometry(S, x, dt_max, e)))
+	if ((rc = geometry(S, x, v, dt_max, e)))
 		return rc;
 	S->prepared = 1;
 	*dt = fmin(dt_max, S->dt_next);
@@ -672,7 +757,7 @@ int dem_shotset_hook(void *ctx, double t, double dt, const double *x, const doub
 
 	if (ns == 0)
 		return DEM_OK;
-	if (!S->prepared && (rc = geometry(S, x, dt, e)))
+	if (!S->prepared && (rc = geometry(S, x, v, dt, e)))
 		return rc;
 	S->prepared = 0;
 	double t0 = dem_wall();

@@ -41,7 +41,12 @@
  * surface it presses on.  A shot touching nothing but within its reach of
  * a facet in one step is limited as a contact just starting on the
  * lightest such facet with gamma = 1 (a first contact lies inside one
- * facet), so no contact begins with a step too long for it.
+ * facet), so no contact begins with a step too long for it.  The surface
+ * nodes limit the step as well: each touching pair's stiffness gamma K_L
+ * goes to its facet's nodes by the area coordinates of G, and a node of
+ * mass m carrying K in all allows lambda 2 sqrt(m / K) (where the 4-8
+ * facets around a node all press on it, the pairs' own limit was up to
+ * twice too long).
  * dem_shotset_prepare gives the smallest limit over the shots and shot
  * pairs, for the coordinates of the coming step.
  *
@@ -53,8 +58,9 @@
  * a soft block with a quasi-static impact the area factor pumps energy
  * for alpha about 5-10 and is stable again at 30; the volume factor is
  * stable there but gains 3 % on the Ch. 7.5 shot at alpha 0.5.  The
- * potential scheme (contact/facet.h) derives them from an energy and is
- * stable on the soft block for every alpha tried (2-30).
+ * potential scheme (contact/facet.h, the default) derives them from an
+ * energy: within 1e-3 of the input on the Ch. 7.5 shot for alpha 0.5-10
+ * with both laws, 1e-5 on the soft block for alpha 2-30.
  */
 #ifndef DEM_SHOT_SHOTSET_H
 #define DEM_SHOT_SHOTSET_H
@@ -120,13 +126,16 @@ int dem_shotset_begin(dem_shotset_t *S, size_t n, const dem_shot_t *shots, const
 		      dem_error_t *e);
 
 /* Before each step, with the block's coordinates x_n that the step's hook
- * will see: find the contacts and give the step, dt_max (the block's
- * stable step) or less if a contact needs it (Box 3.1; a shot within
- * 2 |v| dt_max of a facet is treated as starting a contact with it).
- * The hook then reuses this geometry.  Errors of the candidate search
- * (DEM_EIO without memory). */
-int dem_shotset_prepare(dem_shotset_t *S, const double *x, double dt_max, double *dt,
-			dem_error_t *e);
+ * will see and its velocities v (v_{n-1/2}; NULL: at rest): find the
+ * contacts and give the step, dt_max (the block's stable step) or less if
+ * a contact needs it (Box 3.1; a shot that may reach a facet within
+ * dt_max is treated as starting a contact with it: its sphere enlarged by
+ * 2 |v_shot| dt_max meets the facet's box, and the facet's plane cuts the
+ * sphere or comes nearer than twice the closing speed of shot and facet
+ * nodes times dt_max).  The hook then reuses this geometry.  Errors of the
+ * candidate search (DEM_EIO without memory). */
+int dem_shotset_prepare(dem_shotset_t *S, const double *x, const double *v, double dt_max,
+			double *dt, dem_error_t *e);
 
 /* The load hook (dem_fe_load_fn); ctx is the dem_shotset_t.  Without a
  * dem_shotset_prepare for this step it finds the geometry itself (and the

@@ -193,8 +193,8 @@ YAML
 	run --separate-stderr demshot -s "$T/shot.yaml" --forces "$T/f.txt" -o "$T/s.state" "$T/s2.txt"
 	echo "$stderr"
 	[ "$status" -eq 0 ]
-	grep -q "shots: contact law m=1.5, partial area, sphere/sphere (separation correction), lambda 0.2" <<< "$stderr"
-	grep -q "time: elements .*%, contact (law m=1.5, partial area) .*%" <<< "$stderr"
+	grep -q "shots: contact law m=1.5, partial potential, sphere/sphere (separation correction), lambda 0.2" <<< "$stderr"
+	grep -q "time: elements .*%, contact (law m=1.5, partial potential) .*%" <<< "$stderr"
 	[[ ${stderr_lines[-1]} =~ ^demshot:\ cost:\ .*\ passes=2\ .*contacts=[1-9] ]]
 	# the frames carry the stream's passes 0 and 1, and its impact area
 	[ "$(demprofile --pass all "$T/s.state" | grep -v '^#' | cut -d' ' -f1 | sort -u | tr '\n' ' ')" = "0 1 " ]
@@ -214,7 +214,7 @@ YAML
 	[ "$status" -eq 0 ]
 	run --separate-stderr demshot -s "$T/mu0.yaml" -o "$T/b.state" "$T/s4.txt"
 	[ "$status" -eq 0 ]
-	grep -q "contact law m=1.5, friction mu=0, partial area" <<< "$stderr"
+	grep -q "contact law m=1.5, friction mu=0, partial potential" <<< "$stderr"
 	run --separate-stderr demshot -s "$T/mu3.yaml" -o "$T/c.state" "$T/s4.txt"
 	[ "$status" -eq 0 ]
 	a=$(demprofile "$T/a.state" | grep -v '^#')
@@ -224,15 +224,16 @@ YAML
 	[ "$a" != "$c" ]
 }
 
-@test "demshot: the potential partial contact scheme runs, is named in the log and changes the block" {
+@test "demshot: the thesis's area partial contact scheme runs, is named in the log and changes the block" {
 	shot_scene
-	sed 's/  alpha: 2/  alpha: 2\n  partial: potential/' "$T/shot.yaml" > "$T/pot.yaml"
-	run --separate-stderr demshot -s "$T/shot.yaml" -o "$T/a.state" "$T/s2.txt"
-	[ "$status" -eq 0 ]
-	run --separate-stderr demshot -s "$T/pot.yaml" -o "$T/p.state" "$T/s2.txt"
-	echo "$stderr"
+	sed 's/  alpha: 2/  alpha: 2\n  partial: area/' "$T/shot.yaml" > "$T/area.yaml"
+	run --separate-stderr demshot -s "$T/shot.yaml" -o "$T/p.state" "$T/s2.txt"
 	[ "$status" -eq 0 ]
 	grep -q "contact law m=1.5, partial potential" <<< "$stderr"
+	run --separate-stderr demshot -s "$T/area.yaml" -o "$T/a.state" "$T/s2.txt"
+	echo "$stderr"
+	[ "$status" -eq 0 ]
+	grep -q "contact law m=1.5, partial area" <<< "$stderr"
 	a=$(demprofile "$T/a.state" | grep -v '^#')
 	p=$(demprofile "$T/p.state" | grep -v '^#')
 	[ -n "$p" ]

@@ -334,7 +334,7 @@ static void test_tiled_surface(void **state)
 {
 	(void)state;
 	double ratios[3] = { 2.5, 0.8, 0.3 };  /* contact radius over facet size */
-	static const char *const name[] = { "area", "volume", "potential" };
+	static const char *const name[] = { "potential", "area", "volume" };
 	for (int sc = 0; sc < 3; sc++)
 		for (int r = 0; r < 3; r++) {
 			double wg = 0, ws = 0;
