@@ -33,6 +33,14 @@
  * Jaumann rate (dem_mat_update_batch does it); the total strain reported
  * is the rate of deformation integrated in time and rotated the same way
  * (for coaxial stretching, the logarithmic strain).
+ * Small strain drops the quadratic part 1/2 H^T H (H = grad u) of the
+ * strain, which the elastic strain must dominate: it is fit only while
+ * |H|^2 / 2 << sigma_y / E (a rigid rotation theta stresses it by
+ * D (cos theta - 1)).  A shot that leaves plastic strains beyond a few
+ * percent is not such a case: on the single shot of Ch. 7.5 the residual
+ * sxx peaks at -107 MPa in small strain, -179 MPa in large; the two agree
+ * (1 %) at 5 m/s, where 1/2 H^T H is 0.1 of the yield strain
+ * (examples/cost/STRAIN.md).
  *
  * Damping.  Global mass-proportional damping C = alpha M (Eq. 1.1), alpha
  * in 1/s.  Ch. 7.5 applies "a global damping of 0.05 to all degrees of
