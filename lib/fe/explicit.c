@@ -660,13 +660,8 @@ static inline __attribute__((always_inline)) void slab_1pt(dem_fe_t *fe, slab_t 
 			double ksc[NB], *kp = NULL;
 			if (pm && fe->o.hg_tangent) {
 				const double *epl = fe->ep + B * NB;
-				for (int e = 0; e < NB; e++) {
-					ksc[e] = 1;
-					if (pm >> e & 1) {
-						double H = dem_mat_hardening_slope(m, epl[e]);
-						ksc[e] = H > 0 ? H / (3 * m->G + H) : 0;
-					}
-				}
+				for (int e = 0; e < NB; e++)
+					ksc[e] = pm >> e & 1 ? dem_mat_tangent_ratio(m, epl[e]) : 1;
 				kp = ksc;
 			}
 			dem_hex8_batch_hg(&b, m, kaps, kapv, dt, kp, qs, Q, P);

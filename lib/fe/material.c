@@ -95,6 +95,8 @@ int dem_mat_init(dem_mat_t *m, const dem_mat_param_t *p, dem_error_t *e)
 		m->hsy[0] = p->sy0;
 		m->hsl[0] = p->H;
 	}
+	if (n == 1)
+		m->tratio = m->hsl[0] > 0 ? m->hsl[0] / (3 * m->G + m->hsl[0]) : 0;
 	m->flags = DEM_MAT_PLASTIC;
 	if (p->rate_m > 0) {
 		m->flags |= DEM_MAT_RATE;
