@@ -415,11 +415,11 @@ int main(int argc, char **argv)
 		return rc;
 	}
 	if ((rc = dem_scene_load(&scene, cl.com.scene, &e)))
-		goto fail;
+		goto out;
 	if ((rc = dem_scene_override_all(scene, cl.com.ov, cl.com.nov, &e)))
-		goto fail;
+		goto out;
 	if ((rc = read_scene(scene, &set, &e)))
-		goto fail;
+		goto out;
 	if (cl.com.dump) {
 		dem_scene_dump(scene, stdout);
 		goto done;
@@ -428,26 +428,26 @@ int main(int argc, char **argv)
 	double t = dem_wall();
 	if ((rc = dem_reader_open(&rd, cl.input, &e)) ||
 	    (rc = read_objects(rd, set.buffer, set.shape, &ob, &e)))
-		goto fail;
+		goto out;
 	if (set.shape && !ob.particles) {
 		rc = dem_error_set(&e, DEM_EINPUT, "%s: --shape needs disks or spheres, not boxes",
 				   dem_reader_name(rd));
-		goto fail;
+		goto out;
 	}
 	if (set.periodic && (rc = read_period(rd, set.periodic, ob.dim, &set.opts, &e)))
-		goto fail;
+		goto out;
 	dem_cost_time(&cost, "read", dem_wall() - t);
 
 	if (cl.repeat > 1 && !(set.opts.ws = dem_detect_ws_new())) {
 		rc = dem_error_nomem(&e, "detection workspace");
-		goto fail;
+		goto out;
 	}
 	t = dem_wall();
 	if ((rc = dem_detect(&ob.b, &set.opts, &pairs, &stats, &e)))
-		goto fail;
+		goto out;
 	dem_cost_time(&cost, "detect", dem_wall() - t);
 	if (cl.repeat > 1 && (rc = time_repeats(&ob.b, &set.opts, cl.repeat - 1, &pairs, &cost, &e)))
-		goto fail;
+		goto out;
 	size_t boxpairs = pairs.n;
 	if (set.shape) {
 		t = dem_wall();
@@ -461,12 +461,12 @@ int main(int argc, char **argv)
 		t = dem_wall();
 		if (dem_pairs_sort(&pairs)) {
 			rc = dem_error_nomem(&e, "sorting pairs");
-			goto fail;
+			goto out;
 		}
 		dem_cost_time(&cost, "sort", dem_wall() - t);
 		t = dem_wall();
 		if ((rc = write_pairs(&cl, rd, argc, args, ob.n, &pairs, &e)))
-			goto fail;
+			goto out;
 		dem_cost_time(&cost, "write", dem_wall() - t);
 	}
 	dem_cost_count(&cost, "objects", (double)ob.n);
@@ -481,6 +481,10 @@ int main(int argc, char **argv)
 			dem_detect_algo_name(set.opts.algo), ob.n, stats.cell[0],
 			stats.cell[1], stats.cell[2]);
 done:
+	rc = 0;
+out:
+	if (rc)
+		dem_cli_fail(PROG, rc, &e);
 	dem_detect_ws_free(set.opts.ws);
 	dem_pairs_free(&pairs);
 	objects_free(&ob);
@@ -488,21 +492,5 @@ done:
 	dem_scene_free(scene);
 	free(args);
 	dem_common_free(&cl.com);
-	if (!cl.com.output && (rc = dem_cli_close_stdout(PROG)))
-		return rc;
-	if (!cl.com.dump)
-		dem_cost_print(&cost, PROG, stderr);
-	return 0;
-fail:
-	fprintf(stderr, "%s: %s\n", PROG, e.msg);
-	if (rc == DEM_EUSAGE)
-		fprintf(stderr, "Try '%s --help' for more information.\n", PROG);
-	dem_common_free(&cl.com);
-	dem_detect_ws_free(set.opts.ws);
-	dem_pairs_free(&pairs);
-	objects_free(&ob);
-	dem_reader_close(rd);
-	dem_scene_free(scene);
-	free(args);
-	return rc;
+	return rc ? rc : dem_cli_end(PROG, &cl.com, &cost);
 }

@@ -402,7 +402,7 @@ int main(int argc, char **argv)
 	    (rc = dem_scene_override_all(scene, cl.com.ov, cl.com.nov, &e)) ||
 	    (rc = dem_scene_material(scene, 0, &mat, &e)) ||
 	    (rc = read_scene(scene, cl.com.accuracy, &set, &e)))
-		goto fail;
+		goto out;
 	if (cl.com.dump) {
 		dem_scene_dump(scene, stdout);
 		goto done;
@@ -410,11 +410,11 @@ int main(int argc, char **argv)
 	double t = dem_wall();
 	if ((rc = dem_plate_mesh(&set.plate, &mesh, &e)) ||
 	    (rc = dem_form_create(&form, &mesh, &mat, &e)))
-		goto fail;
+		goto out;
 	dem_cost_time(&cost, "mesh", dem_wall() - t);
 	if (!(sum = open_memstream(&sbuf, &slen))) {
 		rc = dem_error_nomem(&e, "summary");
-		goto fail;
+		goto out;
 	}
 	struct logctx lc = {sum, cl.com.verbose && !cl.com.quiet};
 	set.opts.log = newton_log;
@@ -440,15 +440,15 @@ int main(int argc, char **argv)
 						      sp->app[a].scale, &e);
 			dem_profile_free(&own);
 			if (rc)
-				goto fail;
+				goto out;
 		}
 		dem_cost_time(&cost, "profile", dem_wall() - t);
 		dem_form_constrain(form, sp->bc, sp->minimal);
 		if ((rc = dem_form_step(form, &set.opts, &st, &e)))
-			goto fail;
+			goto out;
 		dem_form_shape_t sh;
 		if ((rc = dem_form_shape(form, set.chord, set.chord_axis, set.fit[0], set.fit[1], &sh, &e)))
-			goto fail;
+			goto out;
 		fprintf(sum, "step: %d\narc_height: %.9g\nchord: %.9g\nmax_deflection: %.9g\n"
 			"curvature_x: %.9g\ncurvature_y: %.9g\ncurvature_xy: %.9g\n"
 			"residual: %.6e\nresidual_rel: %.6e\nload: %.6e\n",
@@ -463,11 +463,11 @@ int main(int argc, char **argv)
 	fclose(sum);
 	sum = NULL;
 	if (cl.centre && (rc = write_centre(cl.centre, form, mesh.nz, &e)))
-		goto fail;
+		goto out;
 	if (cl.vtu && (rc = write_vtu(cl.vtu, form, &mesh, &e)))
-		goto fail;
+		goto out;
 	if ((rc = write_text(cl.com.output, sbuf, slen, &e)))
-		goto fail;
+		goto out;
 	dem_cost_time(&cost, "assemble", st.assemble_s);
 	dem_cost_time(&cost, "factor", st.factor_s);
 	dem_cost_time(&cost, "solve", st.solve_s);
@@ -479,24 +479,10 @@ int main(int argc, char **argv)
 	dem_cost_count(&cost, "factorisations", st.factorisations);
 	dem_cost_count(&cost, "factor_nnz", st.lnz);
 done:
-	free(sbuf);
-	for (int k = 0; k < ip.nin; k++)
-		dem_profile_free(&ip.in[k]);
-	free(ip.in);
-	dem_form_free(form);
-	dem_mesh_free(&mesh);
-	dem_mat_free(&mat);
-	dem_scene_free(scene);
-	dem_common_free(&cl.com);
-	if (!cl.com.output && (rc = dem_cli_close_stdout(PROG)))
-		return rc;
-	if (!cl.com.dump)
-		dem_cost_print(&cost, PROG, stderr);
-	return 0;
-fail:
-	fprintf(stderr, "%s: %s\n", PROG, e.msg);
-	if (rc == DEM_EUSAGE)
-		fprintf(stderr, "Try '%s --help' for more information.\n", PROG);
+	rc = 0;
+out:
+	if (rc)
+		dem_cli_fail(PROG, rc, &e);
 	if (sum)
 		fclose(sum);
 	free(sbuf);
@@ -508,5 +494,5 @@ fail:
 	dem_mat_free(&mat);
 	dem_scene_free(scene);
 	dem_common_free(&cl.com);
-	return rc;
+	return rc ? rc : dem_cli_end(PROG, &cl.com, &cost);
 }

@@ -241,49 +241,66 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 	return done;
 }
 
-/* pack.polygon: the vertices written flat, [x1, y1, x2, y2, ...] (the
- * scene reader has vectors of a known length only, so each even length is
- * tried in turn; a nested [[x1, y1], ...] needs a scene getter for lists
- * of vectors).  *v is malloc'd, NULL when the key is absent. */
-#define MAXPOLY 4096
-static int read_polygon(dem_scene_t *s, double **v, int *n, dem_error_t *e)
+/* A key whose items of per numbers are written flat, [a1, b1, a2, b2, ...]
+ * (pack.polygon, pack.planes): the scene reader has vectors of a known
+ * length only, so each multiple of per up to max items is tried in turn (a
+ * nested [[a1, b1], ...] needs a scene getter for lists of vectors).  *v is
+ * malloc'd with *n items, NULL when the key is absent.  An item that is
+ * bad is reported as the scene reader says, nested items with the message
+ * nested, and no length that fits with none ("%d": max). */
+static int read_flat(dem_scene_t *s, const char *key, int per, int max, const char *nested,
+		     const char *none, double **v, int *n, dem_error_t *e)
 {
 	dem_error_t e2;
+	char item[64];
 
 	*v = NULL;
 	*n = 0;
-	if (!dem_scene_has(s, "pack.polygon"))
+	if (!dem_scene_has(s, key))
 		return DEM_OK;
-	double *buf = malloc(2 * MAXPOLY * sizeof *buf);
+	double *buf = malloc((size_t)(per * max) * sizeof *buf);
 	if (!buf)
-		return dem_error_nomem(e, "polygon");
-	for (int k = 2; k <= 2 * MAXPOLY; k += 2) {
+		return dem_error_nomem(e, key + strlen("pack."));
+	snprintf(item, sizeof item, "%s[", key);
+	for (int k = per; k <= per * max; k += per) {
 		dem_error_clear(&e2);
-		if (dem_scene_vector(s, "pack.polygon", DEM_DIM_LENGTH, k, NULL,
+		if (dem_scene_vector(s, key, DEM_DIM_LENGTH, k, NULL,
 				     -HUGE_VAL, HUGE_VAL, buf, &e2) == DEM_OK) {
 			*v = buf;
-			*n = k / 2;
-			if (dem_front_polygon_check(buf, k / 2, &e2)) {
-				*v = NULL;
-				*n = 0;
-				free(buf);
-				return dem_scene_error(s, "pack.polygon", e, "%s", e2.msg);
-			}
+			*n = k / per;
 			return DEM_OK;
 		}
-		if (strstr(e2.msg, "pack.polygon[")) {  /* an item is bad */
+		if (strstr(e2.msg, item)) {     /* an item is bad */
 			free(buf);
 			if (strstr(e2.msg, "got a sequence"))
-				return dem_scene_error(s, "pack.polygon", e, "write the vertices "
-						       "flat: [x1, y1, x2, y2, ...] (lengths)");
+				return dem_scene_error(s, key, e, "%s", nested);
 			*e = e2;
 			return e->code;
 		}
 	}
 	free(buf);
-	return dem_scene_error(s, "pack.polygon", e, "expected the vertices flat, "
-			       "[x1, y1, x2, y2, ...]: an even number of lengths, 3 to %d vertices",
-			       MAXPOLY);
+	return dem_scene_error(s, key, e, none, max);
+}
+
+/* pack.polygon: the vertices, [x1, y1, x2, y2, ...] (lengths). */
+#define MAXPOLY 4096
+static int read_polygon(dem_scene_t *s, double **v, int *n, dem_error_t *e)
+{
+	dem_error_t e2 = {0};
+	int rc = read_flat(s, "pack.polygon", 2, MAXPOLY,
+			   "write the vertices flat: [x1, y1, x2, y2, ...] (lengths)",
+			   "expected the vertices flat, [x1, y1, x2, y2, ...]: an even number "
+			   "of lengths, 3 to %d vertices", v, n, e);
+
+	if (rc || !*v)
+		return rc;
+	if (dem_front_polygon_check(*v, *n, &e2)) {
+		free(*v);
+		*v = NULL;
+		*n = 0;
+		return dem_scene_error(s, "pack.polygon", e, "%s", e2.msg);
+	}
+	return DEM_OK;
 }
 
 /* The front method's keys of the pack: section. */
@@ -338,59 +355,42 @@ static int read_law(dem_scene_t *s, dem_radius_law_t *law, dem_error_t *e)
 	return DEM_OK;
 }
 
-/* pack.planes: the half-spaces written flat, [nx1, ny1, nz1, d1, nx2, ...]
- * (as pack.polygon: vectors of a known length only, so each multiple of 4
- * is tried in turn).  Each normal points into the domain and is scaled to
- * unit length together with its d, so give the normals as plain numbers
- * and d as a length.  *pl is malloc'd, NULL when the key is absent. */
+/* pack.planes: the half-spaces, [nx1, ny1, nz1, d1, nx2, ...] (as
+ * pack.polygon).  Each normal points into the domain and is scaled to unit
+ * length together with its d, so give the normals as plain numbers and d
+ * as a length.  *pl is malloc'd, NULL when the key is absent. */
 #define MAXPLANES 256
 static int read_planes(dem_scene_t *s, dem_plane_t **pl, size_t *n, dem_error_t *e)
 {
-	dem_error_t e2;
+	double *buf;
+	int k, rc = read_flat(s, "pack.planes", 4, MAXPLANES,
+			      "write the planes flat: [nx1, ny1, nz1, d1, nx2, ...]",
+			      "expected the planes flat, [nx1, ny1, nz1, d1, ...]: 4 numbers "
+			      "a plane, 1 to %d planes", &buf, &k, e);
 
 	*pl = NULL;
 	*n = 0;
-	if (!dem_scene_has(s, "pack.planes"))
-		return DEM_OK;
-	double *buf = malloc(4 * MAXPLANES * sizeof *buf);
-	if (!buf)
+	if (rc || !buf)
+		return rc;
+	dem_plane_t *q = malloc((size_t)k * sizeof *q);
+	if (!q) {
+		free(buf);
 		return dem_error_nomem(e, "planes");
-	for (int k = 4; k <= 4 * MAXPLANES; k += 4) {
-		dem_error_clear(&e2);
-		if (dem_scene_vector(s, "pack.planes", DEM_DIM_LENGTH, k, NULL,
-				     -HUGE_VAL, HUGE_VAL, buf, &e2) == DEM_OK) {
-			dem_plane_t *q = malloc((size_t)(k / 4) * sizeof *q);
-			if (!q) {
-				free(buf);
-				return dem_error_nomem(e, "planes");
-			}
-			for (int i = 0; i < k / 4; i++) {
-				const double *b = buf + 4 * i;
-				double len = sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
-				if (!(len > 0)) {
-					free(q);
-					free(buf);
-					return dem_scene_error(s, "pack.planes", e, "plane %d: the normal is zero", i + 1);
-				}
-				q[i] = (dem_plane_t){{b[0] / len, b[1] / len, b[2] / len}, b[3] / len};
-			}
+	}
+	for (int i = 0; i < k; i++) {
+		const double *b = buf + 4 * i;
+		double len = sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+		if (!(len > 0)) {
+			free(q);
 			free(buf);
-			*pl = q;
-			*n = (size_t)(k / 4);
-			return DEM_OK;
+			return dem_scene_error(s, "pack.planes", e, "plane %d: the normal is zero", i + 1);
 		}
-		if (strstr(e2.msg, "pack.planes[")) {   /* an item is bad */
-			free(buf);
-			if (strstr(e2.msg, "got a sequence"))
-				return dem_scene_error(s, "pack.planes", e, "write the planes "
-						       "flat: [nx1, ny1, nz1, d1, nx2, ...]");
-			*e = e2;
-			return e->code;
-		}
+		q[i] = (dem_plane_t){{b[0] / len, b[1] / len, b[2] / len}, b[3] / len};
 	}
 	free(buf);
-	return dem_scene_error(s, "pack.planes", e, "expected the planes flat, "
-			       "[nx1, ny1, nz1, d1, ...]: 4 numbers a plane, 1 to %d planes", MAXPLANES);
+	*pl = q;
+	*n = (size_t)k;
+	return DEM_OK;
 }
 
 /* The compress method's keys of the pack: section; the accuracy preset
@@ -959,6 +959,7 @@ int main(int argc, char **argv)
 	dem_shots_spec_t hp = {0};
 	dem_compress_spec_t cp;
 	dem_plane_t *planes = NULL;
+	dem_header_t h = {0};   /* of the particle stream */
 	dem_cost_t cost;
 	int rc, method;
 
@@ -975,11 +976,11 @@ int main(int argc, char **argv)
 		return rc;
 	}
 	if ((rc = dem_scene_load(&scene, cl.com.scene, &e)))
-		goto fail;
+		goto out;
 	if ((rc = dem_scene_override_all(scene, cl.com.ov, cl.com.nov, &e)))
-		goto fail;
+		goto out;
 	if ((rc = read_scene(scene, &method, &sp, &fp, &hp, &cp, &planes, cl.com.accuracy, &e)))
-		goto fail;
+		goto out;
 	if (cl.com.dump) {
 		free((double *)fp.polygon);
 		free(planes);
@@ -994,18 +995,11 @@ int main(int argc, char **argv)
 	gsl_rng_free(probe);
 	if (method == METHOD_SHOTS) {
 		if ((rc = write_shots(&hp, &cl, argc, args, &cost, &e)))
-			goto fail;
-		dem_scene_free(scene);
-		free(args);
-		dem_common_free(&cl.com);
-		if (!cl.com.output && (rc = dem_cli_close_stdout(PROG)))
-			return rc;
-		dem_cost_print(&cost, PROG, stderr);
-		return 0;
+			goto out;
+		goto done;
 	}
 
 	/* The domain depends on the radii drawn: size it first, then write. */
-	dem_header_t h;
 	const char *axes[] = {"x", "y", "z"};
 	int dim = method == METHOD_FRONT ? 2 : method == METHOD_COMPRESS ? 3 : sp.dim;
 	dem_header_init(&h, "particles", 1, dim);
@@ -1016,12 +1010,12 @@ int main(int argc, char **argv)
 	dem_header_add(&h, "seed", "%lu", cl.com.seed);
 	if (method == METHOD_FRONT) {
 		if ((rc = write_front(&fp, &cl, &h, &cost, &e)))
-			goto fail_h;
+			goto out;
 		goto done;
 	}
 	if (method == METHOD_COMPRESS) {
 		if ((rc = write_compress(&cp, &cl, &h, &cost, &e)))
-			goto fail_h;
+			goto out;
 		goto done;
 	}
 	char rmin[32], lambda[32], rho[32];
@@ -1033,7 +1027,7 @@ int main(int argc, char **argv)
 
 	double hi[3] = {0, 0, 0};
 	if ((rc = dem_pack_random_domain(&sp, cl.com.seed, hi, &e)))
-		goto fail_h;
+		goto out;
 	{
 		char buf[160];
 		int n = 0;
@@ -1047,40 +1041,30 @@ int main(int argc, char **argv)
 	}
 	int flags = (cl.com.binary ? DEM_STREAM_BINARY : 0) | (cl.com.gzip ? DEM_STREAM_GZIP : 0);
 	if ((rc = dem_writer_open(&w, cl.com.output, &h, flags, &e)))
-		goto fail_h;
+		goto out;
 	double t0 = dem_wall();
 	struct emit_ctx ctx = {w, &e, sp.dim};
 	if ((rc = dem_pack_random(&sp, cl.com.seed, hi, emit, &ctx, &e)))
-		goto fail_h;
+		goto out;
 	if ((rc = dem_writer_close(w, &e))) {
 		w = NULL;
-		goto fail_h;
+		goto out;
 	}
 	w = NULL;
 	dem_cost_time(&cost, "pack", dem_wall() - t0);
 	dem_cost_count(&cost, "objects", (double)sp.n);
 done:
+	rc = 0;
+out:
+	if (rc) {
+		dem_cli_fail(PROG, rc, &e);
+		dem_writer_abort(w);
+	}
 	free((double *)fp.polygon);
 	free(planes);
 	dem_header_free(&h);
 	dem_scene_free(scene);
 	free(args);
 	dem_common_free(&cl.com);
-	if (!cl.com.output && (rc = dem_cli_close_stdout(PROG)))
-		return rc;
-	dem_cost_print(&cost, PROG, stderr);
-	return 0;
-fail_h:
-	dem_header_free(&h);
-fail:
-	fprintf(stderr, "%s: %s\n", PROG, e.msg);
-	if (rc == DEM_EUSAGE)
-		fprintf(stderr, "Try '%s --help' for more information.\n", PROG);
-	dem_writer_abort(w);
-	free((double *)fp.polygon);
-	free(planes);
-	dem_scene_free(scene);
-	free(args);
-	dem_common_free(&cl.com);
-	return rc;
+	return rc ? rc : dem_cli_end(PROG, &cl.com, &cost);
 }

@@ -480,7 +480,7 @@ int main(int argc, char **argv)
 	if ((rc = dem_scene_load(&scene, cl.com.scene, &e)) ||
 	    (rc = dem_scene_override_all(scene, cl.com.ov, cl.com.nov, &e)) ||
 	    (rc = read_scene(scene, &set, &e)))
-		goto fail;
+		goto out;
 	if (cl.com.dump) {
 		dem_scene_dump(scene, stdout);
 		goto done;
@@ -490,21 +490,21 @@ int main(int argc, char **argv)
 	dem_profile_opts_t o;
 	const char *from = "block";
 	if ((rc = dem_state_reader_open(&rd, cl.input, &e)))
-		goto fail;
+		goto out;
 	dem_cost_time(&cost, "read", dem_wall() - t);
 	const dem_mesh_t *m = dem_state_mesh(rd);
 	if ((rc = find_region(&set, rd, &o, &from, &e)))
-		goto fail;
+		goto out;
 	if (o.bin <= 0 && m->nx <= 0) {
 		rc = dem_error_set(&e, DEM_EINPUT, "%s: the mesh has no '# grid' (not structured): "
 				   "element layers cannot be told; give --bins or --bin-size",
 				   dem_state_name(rd));
-		goto fail;
+		goto out;
 	}
 	if (cl.surface && m->nx <= 0) {
 		rc = dem_error_set(&e, DEM_EINPUT, "%s: the mesh has no '# grid' (not structured): "
 				   "no surface metrics (--surface)", dem_state_name(rd));
-		goto fail;
+		goto out;
 	}
 	if (cl.com.verbose)
 		fprintf(stderr, "%s: %zu nodes, %zu elements; region x %g to %g m, y %g to %g m "
@@ -516,15 +516,15 @@ int main(int argc, char **argv)
 	run.argc = argc;
 	run.args = args;
 	if ((rc = profile_stream(&run, rd, &o, &cost, &frames, &e)))
-		goto fail;
+		goto out;
 	t = dem_wall();
 	if ((run.surf.f && (rc = dem_afile_commit(&run.surf, 0, &e))) ||
 	    (run.sat.f && (rc = dem_afile_commit(&run.sat, 0, &e))))
-		goto fail;
+		goto out;
 	rc = dem_writer_close(run.w, &e);
 	run.w = NULL;
 	if (rc)
-		goto fail;
+		goto out;
 	dem_cost_time(&cost, "write", dem_wall() - t);
 	dem_cost_count(&cost, "frames", (double)frames);
 	dem_cost_count(&cost, "passes", (double)run.passes);
@@ -532,25 +532,17 @@ int main(int argc, char **argv)
 	dem_cost_count(&cost, "elements", (double)m->ne);
 	dem_cost_count(&cost, "nodes", (double)m->nn);
 done:
+	rc = 0;
+out:
+	if (rc) {
+		dem_cli_fail(PROG, rc, &e);
+		dem_writer_abort(run.w);
+		dem_afile_abort(&run.surf);
+		dem_afile_abort(&run.sat);
+	}
 	dem_state_reader_close(rd);
 	dem_scene_free(scene);
 	free(args);
 	dem_common_free(&cl.com);
-	if (!cl.com.output && (rc = dem_cli_close_stdout(PROG)))
-		return rc;
-	if (!cl.com.dump)
-		dem_cost_print(&cost, PROG, stderr);
-	return 0;
-fail:
-	fprintf(stderr, "%s: %s\n", PROG, e.msg);
-	if (rc == DEM_EUSAGE)
-		fprintf(stderr, "Try '%s --help' for more information.\n", PROG);
-	dem_writer_abort(run.w);
-	dem_afile_abort(&run.surf);
-	dem_afile_abort(&run.sat);
-	dem_state_reader_close(rd);
-	dem_scene_free(scene);
-	free(args);
-	dem_common_free(&cl.com);
-	return rc;
+	return rc ? rc : dem_cli_end(PROG, &cl.com, &cost);
 }

@@ -1046,7 +1046,7 @@ int main(int argc, char **argv)
 	if ((rc = dem_scene_load(&scene, cl.com.scene, &e)) ||
 	    (rc = dem_scene_override_all(scene, cl.com.ov, cl.com.nov, &e)) ||
 	    (rc = read_scene(scene, cl.com.accuracy, cl.shots != NULL, &st, &e)))
-		goto fail;
+		goto out;
 	if (cl.com.dump) {
 		dem_scene_dump(scene, stdout);
 		goto done;
@@ -1054,7 +1054,7 @@ int main(int argc, char **argv)
 	if (!st.have_shots && (cl.forces || cl.checkpoint)) {
 		rc = dem_error_set(&e, DEM_EUSAGE, "%s needs shots (a shot stream)",
 				   cl.forces ? "--forces" : "--checkpoint");
-		goto fail;
+		goto out;
 	}
 	if (st.have_shots) {
 		/* Box 3.1: lambda 0.1-0.3 (Eq. 3.84), refused above 0.5 */
@@ -1068,29 +1068,29 @@ int main(int argc, char **argv)
 			break;
 		case DEM_LAMBDA_REFUSED:
 			rc = dem_error_set(&e, DEM_EUSAGE, "%s", msg);
-			goto fail;
+			goto out;
 		default:
 			rc = dem_error_set(&e, DEM_EINPUT, "%s", msg);
-			goto fail;
+			goto out;
 		}
 		have_in = 1;
 		if ((rc = shotin_open(&in, cl.shots && strcmp(cl.shots, "-") ? cl.shots : NULL, &e)))
-			goto fail;
+			goto out;
 		const char *a = dem_header_get(dem_reader_header(in.r), "area");
 		st.have_area = a && sscanf(a, "%lf %lf %lf %lf", &st.area[0], &st.area[1],
 					   &st.area[2], &st.area[3]) == 4;
 	}
 	if ((rc = dem_fe_create(&fe, &st.mesh, &st.mat, &st.fe, &e)) ||
 	    (st.have_load && (rc = apply_load(fe, &st, &e))))
-		goto fail;
+		goto out;
 	if (st.have_shots) {
 		if ((rc = dem_shotset_create(&S, &st.mesh, dem_fe_mass(fe), &st.cm, &st.so, &e)))
-			goto fail;
+			goto out;
 		dem_fe_set_load(fe, dem_shotset_hook, S);
 	}
 	if (fields_alloc(&f, &st.mesh)) {
 		rc = dem_error_nomem(&e, "fields");
-		goto fail;
+		goto out;
 	}
 	dem_cost_time(&cost, "setup", dem_wall() - t);
 	if (!cl.com.quiet || cl.com.verbose) {
@@ -1101,14 +1101,14 @@ int main(int argc, char **argv)
 	}
 	if ((rc = open_state(&cl, &st, argc, args, &w, &e)) ||
 	    (cl.forces && (rc = open_forces(cl.forces, argc, args, &fw, &e))))
-		goto fail;
+		goto out;
 	if (cl.checkpoint) {
 		have_ck = 1;
 		if ((rc = ck_init(&ck, cl.checkpoint, scene, cl.forces != NULL, &e)) ||
 		    (rc = cl.resume ? ck_resume(&ck, fe, &in, &st.mesh, w, fw, &f, &passes,
 						 cl.com.quiet, &e)
 				    : ck_fresh(&ck, &e)))
-			goto fail;
+			goto out;
 		dem_fe_stats(fe, &fs0);
 	}
 	t = dem_wall();
@@ -1118,7 +1118,7 @@ int main(int argc, char **argv)
 	else
 		rc = run(fe, &st, cl.com.quiet, w, &f, &cost, &e);
 	if (rc)
-		goto fail;
+		goto out;
 	double run_s = dem_wall() - t;
 	dem_cost_time(&cost, "run", run_s);
 	rc = dem_state_writer_close(w, &e);
@@ -1128,7 +1128,7 @@ int main(int argc, char **argv)
 		fw = NULL;
 	}
 	if (rc)
-		goto fail;
+		goto out;
 	if (have_ck) {
 		dem_cost_time(&cost, "checkpoint", ck.save_s);
 		dem_cost_count(&cost, "checkpoint_mb", (double)ck.size / 1048576);
@@ -1138,7 +1138,7 @@ int main(int argc, char **argv)
 	if (cl.vtu && (rc = dem_vtu_write(cl.vtu, &st.mesh,
 					  &(dem_vtu_fields_t){f.u, f.sig, f.eps, f.ep},
 					  1, &e)))
-		goto fail;
+		goto out;
 
 	dem_fe_energy_t en;
 	dem_fe_stats_t fs;
@@ -1180,6 +1180,15 @@ int main(int argc, char **argv)
 			       ss.contacts > 0 ? 1e9 * ss.contact_s / ss.contacts : 0);
 	}
 done:
+	rc = 0;
+out:
+	if (rc) {
+		dem_cli_fail(PROG, rc, &e);
+		dem_state_writer_abort(w);
+		dem_writer_abort(fw);
+		if (have_ck)
+			ck_close(&ck, 0);
+	}
 	if (have_in)
 		shotin_close(&in);
 	dem_shotset_free(S);
@@ -1189,27 +1198,5 @@ done:
 	dem_scene_free(scene);
 	free(args);
 	dem_common_free(&cl.com);
-	if (!cl.com.output && (rc = dem_cli_close_stdout(PROG)))
-		return rc;
-	if (!cl.com.dump)
-		dem_cost_print(&cost, PROG, stderr);
-	return 0;
-fail:
-	fprintf(stderr, "%s: %s\n", PROG, e.msg);
-	if (rc == DEM_EUSAGE)
-		fprintf(stderr, "Try '%s --help' for more information.\n", PROG);
-	dem_state_writer_abort(w);
-	dem_writer_abort(fw);
-	if (have_ck)
-		ck_close(&ck, 0);
-	if (have_in)
-		shotin_close(&in);
-	dem_shotset_free(S);
-	fields_free(&f);
-	dem_fe_free(fe);
-	settings_free(&st);
-	dem_scene_free(scene);
-	free(args);
-	dem_common_free(&cl.com);
-	return rc;
+	return rc ? rc : dem_cli_end(PROG, &cl.com, &cost);
 }

@@ -11,14 +11,10 @@
 #   ANGLE  impingement angle to the surface, degrees (90 normal, 75 Ch. 7.5.3)
 #   RULE   one_point or full (demshot --rule)
 #
-# Data of Ch. 7.5 (thesis-data.yaml, shot_peening_3d): shot radius 0.5 mm at
-# 19 m/s, block 8 x 8 x 0.9 mm of aluminium (E 68 GPa, yield 157 MPa, linear
-# hardening 120 MPa), bottom fixed, sides fixed in their normal direction,
-# top free, global damping 0.05.  Not given by the thesis and chosen here:
-# nu 0.33 and rho 2700 kg/m^3 (aluminium), steel shot of 7800 kg/m^3, the
-# fine region (1 x 1 mm around a single impact, the 4 x 4 mm impact area for
-# the multi-shot model, 0.6 mm deep: a whole number of elements for every H)
-# and the growth 1.3 outside it.
+# The model is scene.yaml (the data of Ch. 7.5 and what was chosen where the
+# thesis gives none); a run sets in it the element size H, ALPHA, MU and,
+# for the multi-shot model, the fine region over the 4 x 4 mm impact area
+# (scene.sh), and gives ANGLE and RULE to the programs.
 #
 # Writes OUT/NAME.{yaml,shots,state,log,forces}, OUT/NAME.prof (the profile:
 # the four elements at the impact point for a single shot, the 4 x 4 mm area
@@ -31,47 +27,28 @@ $name
 EOF
 [ -n "$rule" ] || { echo "run.sh: $name: expected MODEL-H-ALPHA-MU-ANGLE-RULE" >&2; exit 2; }
 bin=${BIN:-../../bin}
+here=$(dirname "$0")
 threads=${THREADS:-1}
 mkdir -p "$out"
 case $model in
 single)
 	fine=1
 	area=$(awk -v h="$h" 'BEGIN { print 2 * h }')   # the 2 x 2 elements at the centre
-	"$bin"/dempack shots --grid 1 --passes 1 --area 0.2mm:0.2mm --speed 19 \
-		--angle "${angle}deg" --shot-radius 0.5mm --seed 1 > "$out/$name.shots" 2> /dev/null ;;
+	"$bin"/dempack -s "$here/scene.yaml" shots --grid 1 --passes 1 --area 0.2mm:0.2mm \
+		--angle "${angle}deg" --seed 1 > "$out/$name.shots" 2> /dev/null ;;
 multi)
 	fine=4
 	area=4
-	"$bin"/dempack shots --grid 4 --passes 1 --area 4mm:4mm --speed 19 \
-		--angle "${angle}deg" --shot-radius 0.5mm --seed 1 > "$out/$name.shots" 2> /dev/null ;;
+	"$bin"/dempack -s "$here/scene.yaml" shots --grid 4 --passes 1 --area 4mm:4mm \
+		--angle "${angle}deg" --seed 1 > "$out/$name.shots" 2> /dev/null ;;
 *)
 	echo "run.sh: unknown model '$model'" >&2; exit 2 ;;
 esac
 friction=
-[ "$mu" = none ] || friction="  friction: $mu"
-cat > "$out/$name.yaml" <<EOF
-material:
-  E: 68 GPa
-  nu: 0.33
-  rho: 2700 kg/m^3
-  yield: 157 MPa
-  hardening: 120 MPa
-block:
-  size: [8 mm, 8 mm, 0.9 mm]
-  element: $h mm
-  fine: [$fine mm, $fine mm]
-  fine_depth: 0.6 mm
-  ratio: 1.3
-shot:
-  density: 7800 kg/m^3
-contact:
-  alpha: $alpha
-$friction
-run:
-  damping: 0.05
-  rule: $rule
-EOF
-"$bin"/demshot -s "$out/$name.yaml" -v --threads "$threads" --forces "$out/$name.forces" \
+[ "$mu" = none ] || friction="contact.friction=$mu"
+sh "$here/scene.sh" "$here/scene.yaml" "block.element=$h mm" "block.fine=[$fine mm, $fine mm]" \
+	"contact.alpha=$alpha" $friction > "$out/$name.yaml"
+"$bin"/demshot -s "$out/$name.yaml" --rule "$rule" -v --threads "$threads" --forces "$out/$name.forces" \
 	-o "$out/$name.state" "$out/$name.shots" 2> "$out/$name.log"
 "$bin"/demprofile -q --area "${area}mm:${area}mm" --margin 0 --field sxx \
 	--saturation "$out/$name.sxx" -o "$out/$name.prof" "$out/$name.state" 2>> "$out/$name.log"
@@ -93,6 +70,7 @@ awk -v name="$name" -v model="$model" -v h="$h" -v alpha="$alpha" -v mu="$mu" \
 		else n++
 		t0[k] = $3; f0[k] = $8 }
 	END {
+		# the shot of scene.yaml: mass, normal speed
 		m = 4 / 3 * 3.14159265358979 * 0.0005^3 * 7800
 		vz = 19 * sin(angle * 3.14159265358979 / 180)
 		e = n ? J / (n * m * vz) - 1 : 0

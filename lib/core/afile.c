@@ -74,7 +74,7 @@ int dem_afile_open(dem_afile_t *a, const char *path, const char *mode,
 	}
 	snprintf(a->tmp, n, "%s.tmp.XXXXXX", path);
 	fd = mkstemp(a->tmp);
-	if (fd < 0 || !(a->f = fdopen(fd, mode))) {
+	if (fd < 0 || (mode && !(a->f = fdopen(fd, mode)))) {
 		int err = errno;
 
 		if (fd >= 0) {
@@ -87,19 +87,22 @@ int dem_afile_open(dem_afile_t *a, const char *path, const char *mode,
 		return dem_error_set(e, DEM_EIO, "%s: %s", path, strerror(err));
 	}
 	fchmod(fd, 0644);
+	a->fd = fd;
 	dem_tmp_guard(a->tmp);
 	return DEM_OK;
 }
 
 int dem_afile_commit(dem_afile_t *a, int sync, dem_error_t *e)
 {
-	int bad;
+	int bad = 0;
 
 	errno = 0;
-	bad = ferror(a->f) || fflush(a->f) != 0 ||
-	      (sync && fsync(fileno(a->f)) != 0);
-	bad |= fclose(a->f) != 0;
-	a->f = NULL;
+	if (a->f) {     /* else the caller has closed its descriptor */
+		bad = ferror(a->f) || fflush(a->f) != 0 ||
+		      (sync && fsync(fileno(a->f)) != 0);
+		bad |= fclose(a->f) != 0;
+		a->f = NULL;
+	}
 	if (!bad && rename(a->tmp, a->path) == 0)
 		dem_tmp_forget(a->tmp);
 	else {

@@ -10,19 +10,24 @@
 #include "core/error.h"
 
 typedef struct dem_afile {
-	FILE *f;                /* write here */
+	FILE *f;                /* write here (NULL when opened without a mode) */
+	int fd;                 /* the temporary file's descriptor */
 	char *path, *tmp;
 } dem_afile_t;
 
 /* Create the temporary file; mode as for fdopen ("w" or "wb").  DEM_EIO
- * naming path when it cannot be created. */
+ * naming path when it cannot be created.  With mode NULL no FILE is made:
+ * the caller writes through fd by other means (zlib's gzdopen, say) and
+ * closes it itself, a write error being its own to report, before
+ * dem_afile_commit, which then only renames. */
 int dem_afile_open(dem_afile_t *a, const char *path, const char *mode,
 		   dem_error_t *e);
-/* Close and rename into place (sync: fsync first, for checkpoints); on
- * any failure the temporary file is removed and DEM_EIO names path. */
+/* Close and rename into place (sync: fsync first, for checkpoints; only
+ * with a FILE); on any failure the temporary file is removed and DEM_EIO
+ * names path. */
 int dem_afile_commit(dem_afile_t *a, int sync, dem_error_t *e);
-/* Give up: close and remove the temporary file.  A zeroed or already
- * finished a is fine. */
+/* Give up: close (the FILE, if any) and remove the temporary file.  A
+ * zeroed or already finished a is fine. */
 void dem_afile_abort(dem_afile_t *a);
 
 /* Temporary files in progress, removed if a signal (SIGINT, SIGTERM,

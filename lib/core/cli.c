@@ -246,3 +246,22 @@ int dem_cli_close_stdout(const char *prog)
 	}
 	return 0;
 }
+
+int dem_cli_end(const char *prog, const dem_common_t *m, const dem_cost_t *cost)
+{
+	int rc;
+
+	if (!m->output && (rc = dem_cli_close_stdout(prog)))
+		return rc;
+	if (!m->dump)
+		dem_cost_print(cost, prog, stderr);
+	return 0;
+}
+
+int dem_cli_fail(const char *prog, int rc, const dem_error_t *e)
+{
+	fprintf(stderr, "%s: %s\n", prog, e->msg);
+	if (rc == DEM_EUSAGE)
+		fprintf(stderr, "Try '%s --help' for more information.\n", prog);
+	return rc;
+}

@@ -12,6 +12,9 @@
 #include <getopt.h>
 #include <stdio.h>
 
+#include "core/cost.h"
+#include "core/error.h"
+
 enum {                          /* keys of long-only options */
 	DEM_OPT_SEED = 256, DEM_OPT_ACCURACY, DEM_OPT_DUMP_SCENE,
 	DEM_OPT_VERSION, DEM_OPT_PROGRAM = 300  /* programs number from here */
@@ -107,5 +110,14 @@ void dem_cli_version(const dem_cli_t *c);
 /* Flush and close standard output; a write error is reported and gives
  * DEM_EIO (coreutils' close_stdout). */
 int dem_cli_close_stdout(const char *prog);
+
+/* The two ends of a program's main.  dem_cli_end, on success: close
+ * standard output when the output went there (no --output), then print the
+ * cost line last on stderr (not after --dump-scene); returns the exit code
+ * (0, or DEM_EIO on a write error).  dem_cli_fail: report the error as
+ * "prog: message", with the "Try 'prog --help'" line for a usage error;
+ * returns rc. */
+int dem_cli_end(const char *prog, const dem_common_t *m, const dem_cost_t *cost);
+int dem_cli_fail(const char *prog, int rc, const dem_error_t *e);
 
 #endif

@@ -35,8 +35,8 @@
 
 #include "core/cost.h"
 #include "fe/hex8.h"
+#include "fe/simd.h"
 
-#define NB DEM_HEX8_NB
 #define NCHUNK 64     /* node chunks of the node loop (fixed: see header) */
 #define MAXSLAB 32    /* slabs of element layers */
 #ifndef PF
@@ -49,14 +49,6 @@
 #endif
 typedef double vec4 __attribute__((vector_size(4 * sizeof(double))));
 
-/* the node and element loops are also compiled for AVX2 on x86-64 with
- * GCC (as the kernels of hex8.c and material.c), chosen at load time */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && \
-    !defined(DEM_NO_SIMD_CLONES)
-#define CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
-#else
-#define CLONES
-#endif
 typedef long long lvec4 __attribute__((vector_size(4 * sizeof(double))));
 /* an unaligned vector in memory: one whole-vector load or store (GCC
  * splits a memcpy of 32 bytes in halves, which a whole-vector access then
@@ -502,7 +494,7 @@ static inline __attribute__((always_inline)) void node_range(dem_fe_t *fe, const
 	sum[S_WDB] = 0.5 * wdb;
 }
 
-CLONES
+SIMD_CLONES
 static void node_chunk(dem_fe_t *fe, const coef_t *c, int ch)
 {
 	size_t n0 = fe->nn * (size_t)ch / NCHUNK, n1 = fe->nn * (size_t)(ch + 1) / NCHUNK;
@@ -660,13 +652,8 @@ static inline __attribute__((always_inline)) void slab_1pt(dem_fe_t *fe, slab_t 
 			double ksc[NB], *kp = NULL;
 			if (pm && fe->o.hg_tangent) {
 				const double *epl = fe->ep + B * NB;
-				for (int e = 0; e < NB; e++) {
-					ksc[e] = 1;
-					if (pm >> e & 1) {
-						double H = dem_mat_hardening_slope(m, epl[e]);
-						ksc[e] = H > 0 ? H / (3 * m->G + H) : 0;
-					}
-				}
+				for (int e = 0; e < NB; e++)
+					ksc[e] = pm >> e & 1 ? dem_mat_tangent_ratio(m, epl[e]) : 1;
 				kp = ksc;
 			}
 			dem_hex8_batch_hg(&b, m, kaps, kapv, dt, kp, qs, Q, P);
@@ -851,7 +838,7 @@ static inline __attribute__((always_inline)) void slab_full(dem_fe_t *fe, slab_t
 
 /* the loop chosen once, before time stepping: effects are constants in
  * each instance */
-CLONES
+SIMD_CLONES
 static void slab_run(dem_fe_t *fe, slab_t *s, double dt)
 {
 	if (fe->o.rule == DEM_FE_FULL) {

@@ -27,6 +27,9 @@
 #include <math.h>
 #include <string.h>
 
+#include "fe/dense.h"
+#include "fe/simd.h"
+
 const double dem_hex8_node_xi[8] = { -1, 1, 1, -1, -1, 1, 1, -1 };
 const double dem_hex8_node_eta[8] = { -1, -1, 1, 1, -1, -1, 1, 1 };
 const double dem_hex8_node_zeta[8] = { -1, -1, -1, -1, 1, 1, 1, 1 };
@@ -353,21 +356,7 @@ int dem_hex8_1pt_stiffness(const double x[24], const double D[36], double ks,
 /* ---- One-point integration, batched ------------------------------------- */
 
 /* The batch kernels are the scalar ones written over a vector of NB doubles
- * (GCC/Clang vector extension): one lane per element, so every operation
- * runs across the batch in SIMD registers whatever the target's width. */
-#define NB DEM_HEX8_NB
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && \
-    !defined(DEM_NO_SIMD_CLONES)
-#define SIMD_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
-#else
-#define SIMD_CLONES
-#endif
-typedef double vec __attribute__((vector_size(NB * sizeof(double))));
-typedef long long lvec __attribute__((vector_size(NB * sizeof(double))));
-
-/* (macros: passing wide vectors by value would tie us to an ABI) */
-#define VLOAD(v, p) memcpy(&(v), (p), sizeof(vec))
-#define VSTORE(p, v) memcpy((p), &(v), sizeof(vec))
+ * (simd.h): one lane per element. */
 
 static inline void walsh_v(const vec *u, vec *a)
 {
@@ -739,49 +728,6 @@ void dem_hex8_full_force(const dem_hex8_full_t *g, const double sig[48],
 
 /* ---- Implicit element ------------------------------------------------------ */
 
-/* Solve A X = B by Gaussian elimination with partial pivoting; A (n x n) and
- * B (n x nrhs) row-major, both overwritten (B by X).  Returns -1 if singular. */
-static int gauss_solve(int n, double *A, int nrhs, double *B)
-{
-	for (int k = 0; k < n; k++) {
-		int piv = k;
-		for (int i = k + 1; i < n; i++)
-			if (fabs(A[i * n + k]) > fabs(A[piv * n + k]))
-				piv = i;
-		if (!(fabs(A[piv * n + k]) > 0))
-			return -1;
-		if (piv != k) {
-			for (int j = 0; j < n; j++) {
-				double t = A[k * n + j];
-				A[k * n + j] = A[piv * n + j];
-				A[piv * n + j] = t;
-			}
-			for (int j = 0; j < nrhs; j++) {
-				double t = B[k * nrhs + j];
-				B[k * nrhs + j] = B[piv * nrhs + j];
-				B[piv * nrhs + j] = t;
-			}
-		}
-		for (int i = k + 1; i < n; i++) {
-			double l = A[i * n + k] / A[k * n + k];
-			if (l == 0)
-				continue;
-			for (int j = k; j < n; j++)
-				A[i * n + j] -= l * A[k * n + j];
-			for (int j = 0; j < nrhs; j++)
-				B[i * nrhs + j] -= l * B[k * nrhs + j];
-		}
-	}
-	for (int k = n - 1; k >= 0; k--)
-		for (int j = 0; j < nrhs; j++) {
-			double s = B[k * nrhs + j];
-			for (int i = k + 1; i < n; i++)
-				s -= A[k * n + i] * B[i * nrhs + j];
-			B[k * nrhs + j] = s / A[k * n + k];
-		}
-	return 0;
-}
-
 #define NPN 11  /* pseudo-nodes: 8 nodes and 3 incompatible modes */
 
 int dem_hex8_static(const dem_mat_t *m, dem_hex8_rule_t rule, const double X[24],
@@ -916,7 +862,7 @@ int dem_hex8_static(const dem_mat_t *m, dem_hex8_rule_t rule, const double X[24]
 			add_btdb(3, &Bp[p][8], Dg[p], g.wdet[p], Kaa);
 		for (int a = 0; a < 9; a++)
 			da[a] = r[24 + a];
-		if (gauss_solve(9, Kaa, 1, da))
+		if (dem_dense_solve(9, Kaa, 1, da))
 			return DEM_HEX8_NOCONV;
 		memcpy(a0, h->alpha, sizeof a0);
 		rprev = rn;
@@ -939,6 +885,13 @@ int dem_hex8_static(const dem_mat_t *m, dem_hex8_rule_t rule, const double X[24]
 	memset(Kf, 0, sizeof Kf);
 	for (int p = 0; p < 8; p++)
 		add_btdb(nb, Bp[p], Dg[p], g.wdet[p], Kf);
+	return dem_hex8_condense(eas, Kf, nd, r, fint, K);
+}
+
+/* Static condensation of the incompatible modes (hex8.h). */
+int dem_hex8_condense(int eas, double *Kf, int nd, double *r, double fint[24],
+		      double K[576])
+{
 	if (eas) {
 		/* static condensation: K = Kuu - Kua Kaa^-1 Kau,
 		 * f = r_u - Kua Kaa^-1 r_a */
@@ -950,7 +903,7 @@ int dem_hex8_static(const dem_mat_t *m, dem_hex8_rule_t rule, const double X[24]
 				Z[25 * a + j] = Kf[(24 + a) * nd + j];
 			Z[25 * a + 24] = r[24 + a];
 		}
-		if (gauss_solve(9, Kaa, 25, Z))
+		if (dem_dense_solve(9, Kaa, 25, Z))
 			return DEM_HEX8_NOCONV;
 		for (int i = 0; i < 24; i++) {
 			for (int j = 0; j < 24; j++) {

@@ -219,6 +219,15 @@ int dem_hex8_static(const dem_mat_t *m, dem_hex8_rule_t rule, const double X[24]
 		    const double du[24], const dem_hex8_hist_t *hn,
 		    dem_hex8_hist_t *h, double fint[24], double K[576], double *wp);
 
+/* The last step of dem_hex8_static and dem_hex8_large: from the element
+ * system of the pseudo-nodes (Kf, rows nd long; residual r; dofs 3 n + i,
+ * the 3 incompatible modes last), with eas the static condensation of the
+ * modes (K = Kuu - Kua Kaa^-1 Kau, f = r_u - Kua Kaa^-1 r_a, in place),
+ * then fint and K[576] of the nodes in dof order 8 i + I.  Returns
+ * DEM_HEX8_OK, or DEM_HEX8_NOCONV when Kaa is singular. */
+int dem_hex8_condense(int eas, double *Kf, int nd, double *r, double fint[24],
+		      double K[576]);
+
 /* ---- Helpers ------------------------------------------------------------ */
 
 /* Coordinates of the 8 Gauss points (component-major, as x), for mapping

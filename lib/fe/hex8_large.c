@@ -14,51 +14,10 @@
 #include <math.h>
 #include <string.h>
 
+#include "fe/dense.h"
+
 #define NPN 11                          /* pseudo-nodes */
 #define GAUSS 0.57735026918962576451    /* 1/sqrt(3) */
-
-/* Solve A X = B (A n x n, B n x nrhs, row-major, overwritten) by Gaussian
- * elimination with partial pivoting; -1 if singular. */
-static int solve(int n, double *A, int nrhs, double *B)
-{
-	for (int k = 0; k < n; k++) {
-		int piv = k;
-		for (int i = k + 1; i < n; i++)
-			if (fabs(A[i * n + k]) > fabs(A[piv * n + k]))
-				piv = i;
-		if (!(fabs(A[piv * n + k]) > 0))
-			return -1;
-		if (piv != k) {
-			for (int j = 0; j < n; j++) {
-				double t = A[k * n + j];
-				A[k * n + j] = A[piv * n + j];
-				A[piv * n + j] = t;
-			}
-			for (int j = 0; j < nrhs; j++) {
-				double t = B[k * nrhs + j];
-				B[k * nrhs + j] = B[piv * nrhs + j];
-				B[piv * nrhs + j] = t;
-			}
-		}
-		for (int i = k + 1; i < n; i++) {
-			double l = A[i * n + k] / A[k * n + k];
-			if (l == 0)
-				continue;
-			for (int j = k; j < n; j++)
-				A[i * n + j] -= l * A[k * n + j];
-			for (int j = 0; j < nrhs; j++)
-				B[i * nrhs + j] -= l * B[k * nrhs + j];
-		}
-	}
-	for (int k = n - 1; k >= 0; k--)
-		for (int j = 0; j < nrhs; j++) {
-			double s = B[k * nrhs + j];
-			for (int i = k + 1; i < n; i++)
-				s -= A[k * n + i] * B[i * nrhs + j];
-			B[k * nrhs + j] = s / A[k * n + k];
-		}
-	return 0;
-}
 
 /* Inverse of the 3x3 matrix with columns u, v, w: rows (v x w, w x u,
  * u x v) / det, so Ji[3 m + j] = d xi_m / d x_j.  Returns det. */
@@ -296,7 +255,7 @@ int dem_hex8_large(const dem_mat_t *m, int eas, const double X[24],
 			add_k(3, &B[p][8], (const double (*)[3])&g[p][8], Dg[p], h->sig + 6 * p,
 			      geo.wdet[p], Kaa, 9, 0, 0);
 		memcpy(da, r + 24, sizeof da);
-		if (solve(9, Kaa, 1, da))
+		if (dem_dense_solve(9, Kaa, 1, da))
 			return DEM_HEX8_NOCONV;
 		memcpy(a0, h->alpha, sizeof a0);
 		rprev = rn;
@@ -318,37 +277,5 @@ int dem_hex8_large(const dem_mat_t *m, int eas, const double X[24],
 	memset(Kf, 0, sizeof Kf);
 	for (int p = 0; p < 8; p++)
 		add_k(nb, B[p], (const double (*)[3])g[p], Dg[p], h->sig + 6 * p, geo.wdet[p], Kf, nd, 0, 8);
-	if (eas) {
-		/* static condensation of the modes */
-		double Kaa[81], Z[9 * 25];
-		for (int a = 0; a < 9; a++) {
-			for (int b = 0; b < 9; b++)
-				Kaa[9 * a + b] = Kf[(24 + a) * nd + 24 + b];
-			for (int j = 0; j < 24; j++)
-				Z[25 * a + j] = Kf[(24 + a) * nd + j];
-			Z[25 * a + 24] = r[24 + a];
-		}
-		if (solve(9, Kaa, 25, Z))
-			return DEM_HEX8_NOCONV;
-		for (int i = 0; i < 24; i++) {
-			for (int j = 0; j < 24; j++) {
-				double s = 0;
-				for (int a = 0; a < 9; a++)
-					s += Kf[i * nd + 24 + a] * Z[25 * a + j];
-				Kf[i * nd + j] -= s;
-			}
-			double s = 0;
-			for (int a = 0; a < 9; a++)
-				s += Kf[i * nd + 24 + a] * Z[25 * a + 24];
-			r[i] -= s;
-		}
-	}
-	for (int I = 0; I < 8; I++)
-		for (int i = 0; i < 3; i++) {
-			fint[8 * i + I] = r[3 * I + i];
-			for (int J = 0; J < 8; J++)
-				for (int j = 0; j < 3; j++)
-					K[(8 * i + I) * 24 + 8 * j + J] = Kf[(3 * I + i) * nd + 3 * J + j];
-		}
-	return DEM_HEX8_OK;
+	return dem_hex8_condense(eas, Kf, nd, r, fint, K);
 }

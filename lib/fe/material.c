@@ -29,6 +29,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fe/simd.h"
+
 int dem_mat_init(dem_mat_t *m, const dem_mat_param_t *p, dem_error_t *e)
 {
 	memset(m, 0, sizeof *m);
@@ -95,6 +97,8 @@ int dem_mat_init(dem_mat_t *m, const dem_mat_param_t *p, dem_error_t *e)
 		m->hsy[0] = p->sy0;
 		m->hsl[0] = p->H;
 	}
+	if (n == 1)
+		m->tratio = m->hsl[0] > 0 ? m->hsl[0] / (3 * m->G + m->hsl[0]) : 0;
 	m->flags = DEM_MAT_PLASTIC;
 	if (p->rate_m > 0) {
 		m->flags |= DEM_MAT_RATE;
@@ -328,20 +332,7 @@ int dem_mat_update_j2_rate(const dem_mat_t *m, const double deps[6], double dt,
 
 /* ---- Batched update ------------------------------------------------------ */
 
-/* One lane per material point over a vector of NB doubles (GCC/Clang vector
- * extension); on x86-64 with GCC a second copy is compiled for AVX2 and
- * picked at load time. */
-#define NB DEM_MAT_NB
-typedef double vec __attribute__((vector_size(NB * sizeof(double))));
-typedef long long lvec __attribute__((vector_size(NB * sizeof(double))));
-#define VLOAD(v, p) memcpy(&(v), (p), sizeof(vec))
-#define VSTORE(p, v) memcpy((p), &(v), sizeof(vec))
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && \
-    !defined(DEM_NO_SIMD_CLONES)
-#define SIMD_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
-#else
-#define SIMD_CLONES
-#endif
+/* One lane per material point over a vector of NB doubles (simd.h). */
 
 SIMD_CLONES
 unsigned dem_mat_update_batch(const dem_mat_t *m, double dt,

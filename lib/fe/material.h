@@ -58,6 +58,9 @@ typedef struct dem_mat {
 	 * beyond the last knot.  Linear hardening is the one-knot case. */
 	int nhard;
 	double *hep, *hsy, *hsl;
+	/* One knot (linear hardening, slope H = hsl[0]): the tangent shear
+	 * ratio H / (3G + H) of dem_mat_tangent_ratio(), computed once */
+	double tratio;
 	double rate_m, rate_ref;
 } dem_mat_t;
 
@@ -74,6 +77,18 @@ double dem_mat_flow_stress(const dem_mat_t *m, double ep, double rate);
 /* Hardening slope d(sigma_y)/d(ep) of the rate-independent curve at ep
  * (the slope of the segment to the right of ep). */
 double dem_mat_hardening_slope(const dem_mat_t *m, double ep);
+
+/* Tangent shear ratio H / (3G + H) of J2 flow at ep, H the hardening slope
+ * there (0 when H is 0): the shear stiffness along the flow over the
+ * elastic one (the explicit stage scales its hourglass stiffness by it in
+ * elements that flow).  Read from the material for linear hardening. */
+static inline double dem_mat_tangent_ratio(const dem_mat_t *m, double ep)
+{
+	if (m->nhard == 1)
+		return m->tratio;
+	double H = dem_mat_hardening_slope(m, ep);
+	return H > 0 ? H / (3 * m->G + H) : 0;
+}
 
 /* Stress update for a strain increment deps over the time dt:
  * sig (in: at the start, out: at the end), ep likewise; *wp receives the

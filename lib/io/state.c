@@ -217,23 +217,12 @@ struct dem_state_reader {
 	double row[NCOL];
 };
 
-static void mesh_release(dem_mesh_t *m)
-{
-	free(m->gx);
-	free(m->gy);
-	free(m->gz);
-	free(m->X);
-	free(m->hex);
-	free(m->fix);
-	memset(m, 0, sizeof *m);
-}
-
 void dem_state_reader_close(dem_state_reader_t *r)
 {
 	if (!r)
 		return;
 	dem_reader_close(r->rd);
-	mesh_release(&r->m);
+	dem_mesh_free(&r->m);
 	free(r->u);
 	free(r->sig);
 	free(r->eps);

@@ -214,7 +214,7 @@ enum { BLOCK = 4096 };          /* binary records per block */
 struct dem_writer {
 	gzFile gz;
 	dem_header_t h;         /* columns only; lines are written at open */
-	char *path, *tmp;       /* final and temporary names; NULL for stdout */
+	dem_afile_t af;         /* the file, written atomically; zeroed for stdout */
 	char name[256];         /* for messages */
 	size_t recsize;
 	unsigned char *blk;     /* binary: the block being filled */
@@ -258,24 +258,12 @@ int dem_writer_open(dem_writer_t **wp, const char *path, const dem_header_t *h,
 		return dem_error_nomem(e, "stream writer");
 	if (path && strcmp(path, "-") != 0) {
 		snprintf(w->name, sizeof w->name, "%s", path);
-		size_t n = strlen(path);
-		w->path = strdup(path);
-		w->tmp = malloc(n + 16);
-		if (!w->path || !w->tmp) {
+		int rc = dem_afile_open(&w->af, path, NULL, e);
+		if (rc) {
 			dem_writer_abort(w);
-			return dem_error_nomem(e, "stream writer");
+			return rc;
 		}
-		snprintf(w->tmp, n + 16, "%s.tmp.XXXXXX", path);
-		fd = mkstemp(w->tmp);
-		if (fd < 0) {
-			int err = errno;
-			free(w->tmp);
-			w->tmp = NULL;
-			dem_writer_abort(w);
-			return dem_error_set(e, DEM_EIO, "%s: %s", path, strerror(err));
-		}
-		fchmod(fd, 0644);
-		dem_tmp_guard(w->tmp);
+		fd = w->af.fd;  /* zlib's from gzdopen on */
 	} else {
 		snprintf(w->name, sizeof w->name, "stdout");
 		fd = dup(STDOUT_FILENO);
@@ -393,9 +381,7 @@ uint64_t dem_writer_rows(const dem_writer_t *w)
 static void writer_free(dem_writer_t *w)
 {
 	dem_header_free(&w->h);
-	free(w->path);
-	dem_tmp_forget(w->tmp);
-	free(w->tmp);
+	dem_afile_abort(&w->af);        /* removes the file unless committed */
 	free(w->blk);
 	free(w->line);
 	free(w);
@@ -422,8 +408,8 @@ int dem_writer_close(dem_writer_t *w, dem_error_t *e)
 	if (!rc && zrc != Z_OK)
 		rc = dem_error_set(e, DEM_EIO, "%s: %s", w->name,
 				   zrc == Z_ERRNO ? strerror(errno) : "write failed");
-	if (!rc && w->tmp && rename(w->tmp, w->path) != 0)
-		rc = dem_error_set(e, DEM_EIO, "%s: %s", w->path, strerror(errno));
+	if (!rc && w->af.tmp)
+		rc = dem_afile_commit(&w->af, 0, e);
 	if (rc) {
 		dem_writer_abort(w);
 		return rc;
@@ -438,8 +424,6 @@ void dem_writer_abort(dem_writer_t *w)
 		return;
 	if (w->gz)
 		gzclose(w->gz);
-	if (w->tmp)
-		unlink(w->tmp);
 	writer_free(w);
 }
 

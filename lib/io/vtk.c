@@ -7,12 +7,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 struct dem_vtk {
-	FILE *f;
-	char *path, *tmp;
+	dem_afile_t af;         /* written to af.f, renamed into place at close */
 	int dim;
 	size_t n, got;
 	double *r;
@@ -22,13 +19,7 @@ void dem_vtk_abort(dem_vtk_t *w)
 {
 	if (!w)
 		return;
-	if (w->f)
-		fclose(w->f);
-	if (w->tmp)
-		unlink(w->tmp);
-	dem_tmp_forget(w->tmp);
-	free(w->path);
-	free(w->tmp);
+	dem_afile_abort(&w->af);
 	free(w->r);
 	free(w);
 }
@@ -36,7 +27,7 @@ void dem_vtk_abort(dem_vtk_t *w)
 static int fail_io(dem_vtk_t *w, dem_error_t *e)
 {
 	int err = errno ? errno : EIO;
-	dem_error_set(e, DEM_EIO, "%s: %s", w->path, strerror(err));
+	dem_error_set(e, DEM_EIO, "%s: %s", w->af.path, strerror(err));
 	dem_vtk_abort(w);
 	return DEM_EIO;
 }
@@ -56,31 +47,14 @@ int dem_vtk_open(dem_vtk_t **wp, const char *path, int dim, size_t n,
 	}
 	w->dim = dim;
 	w->n = n;
-	size_t len = strlen(path);
-	w->path = strdup(path);
-	w->tmp = malloc(len + 16);
-	w->r = malloc((n ? n : 1) * sizeof *w->r);
-	if (!w->path || !w->tmp || !w->r) {
-		free(w->tmp);
-		w->tmp = NULL;
+	if (!(w->r = malloc((n ? n : 1) * sizeof *w->r))) {
 		dem_vtk_abort(w);
 		return dem_error_nomem(e, "vtk writer");
 	}
-	snprintf(w->tmp, len + 16, "%s.tmp.XXXXXX", path);
-	int fd = mkstemp(w->tmp);
-	if (fd < 0) {
-		int err = errno;
-		free(w->tmp);
-		w->tmp = NULL;
-		dem_error_set(e, DEM_EIO, "%s: %s", path, strerror(err));
+	int rc = dem_afile_open(&w->af, path, "w", e);
+	if (rc) {
 		dem_vtk_abort(w);
-		return DEM_EIO;
-	}
-	fchmod(fd, 0644);
-	dem_tmp_guard(w->tmp);
-	if (!(w->f = fdopen(fd, "w"))) {
-		close(fd);
-		return fail_io(w, e);
+		return rc;
 	}
 	/* the title is one line of at most 255 characters */
 	snprintf(line, sizeof line, "%s", title ? title : "dem packing");
@@ -88,7 +62,7 @@ int dem_vtk_open(dem_vtk_t **wp, const char *path, int dim, size_t n,
 		if (*p == '\n' || *p == '\r')
 			*p = ' ';
 	errno = 0;
-	if (fprintf(w->f, "# vtk DataFile Version 3.0\n%s\nASCII\nDATASET POLYDATA\n"
+	if (fprintf(w->af.f, "# vtk DataFile Version 3.0\n%s\nASCII\nDATASET POLYDATA\n"
 		    "POINTS %zu double\n", line, n) < 0)
 		return fail_io(w, e);
 	*wp = w;
@@ -98,12 +72,12 @@ int dem_vtk_open(dem_vtk_t **wp, const char *path, int dim, size_t n,
 int dem_vtk_point(dem_vtk_t *w, const double *x, double r, dem_error_t *e)
 {
 	if (w->got == w->n) {
-		dem_error_set(e, DEM_EIO, "%s: more than the %zu points announced", w->path, w->n);
+		dem_error_set(e, DEM_EIO, "%s: more than the %zu points announced", w->af.path, w->n);
 		dem_vtk_abort(w);
 		return DEM_EIO;
 	}
 	errno = 0;
-	if (fprintf(w->f, "%.17g %.17g %.17g\n", x[0], x[1], w->dim == 3 ? x[2] : 0.0) < 0)
+	if (fprintf(w->af.f, "%.17g %.17g %.17g\n", x[0], x[1], w->dim == 3 ? x[2] : 0.0) < 0)
 		return fail_io(w, e);
 	w->r[w->got++] = r;
 	return DEM_OK;
@@ -112,28 +86,22 @@ int dem_vtk_point(dem_vtk_t *w, const double *x, double r, dem_error_t *e)
 int dem_vtk_close(dem_vtk_t *w, dem_error_t *e)
 {
 	if (w->got != w->n) {
-		dem_error_set(e, DEM_EIO, "%s: %zu points written, %zu announced", w->path, w->got, w->n);
+		dem_error_set(e, DEM_EIO, "%s: %zu points written, %zu announced", w->af.path, w->got, w->n);
 		dem_vtk_abort(w);
 		return DEM_EIO;
 	}
 	errno = 0;
-	if (fprintf(w->f, "VERTICES %zu %zu\n", w->n, 2 * w->n) < 0)
+	if (fprintf(w->af.f, "VERTICES %zu %zu\n", w->n, 2 * w->n) < 0)
 		return fail_io(w, e);
 	for (size_t i = 0; i < w->n; i++)
-		if (fprintf(w->f, "1 %zu\n", i) < 0)
+		if (fprintf(w->af.f, "1 %zu\n", i) < 0)
 			return fail_io(w, e);
-	if (fprintf(w->f, "POINT_DATA %zu\nSCALARS radius double 1\nLOOKUP_TABLE default\n", w->n) < 0)
+	if (fprintf(w->af.f, "POINT_DATA %zu\nSCALARS radius double 1\nLOOKUP_TABLE default\n", w->n) < 0)
 		return fail_io(w, e);
 	for (size_t i = 0; i < w->n; i++)
-		if (fprintf(w->f, "%.17g\n", w->r[i]) < 0)
+		if (fprintf(w->af.f, "%.17g\n", w->r[i]) < 0)
 			return fail_io(w, e);
-	int rc = fclose(w->f);
-	w->f = NULL;
-	if (rc != 0 || rename(w->tmp, w->path) != 0)
-		return fail_io(w, e);
-	dem_tmp_forget(w->tmp);
-	free(w->tmp);
-	w->tmp = NULL;
+	int rc = dem_afile_commit(&w->af, 0, e);
 	dem_vtk_abort(w);       /* frees; nothing left to remove */
-	return DEM_OK;
+	return rc;
 }

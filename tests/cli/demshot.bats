@@ -159,33 +159,23 @@ YAML
 }
 
 # ---- the peening run (shots) ----------------------------------------------
-# The Ch. 7.5 single shot (0.5 mm radius, 19 m/s, aluminium E 68 GPa, yield
-# 157 MPa, hardening 120 MPa; thesis-data.yaml) on a coarse block.
+# The Ch. 7.5 single shot (examples/ch75/scene.yaml: 0.5 mm radius, 19 m/s,
+# aluminium E 68 GPa, yield 157 MPa, hardening 120 MPa; thesis-data.yaml) on
+# a coarse block 2 x 2 x 1 mm of 0.1 mm elements (fine region 0.4 mm deep),
+# passes of at most 20 us.
+
+CH75=$BATS_TEST_DIRNAME/../../examples/ch75
+
+# scene_set SCENE KEY=VALUE...: SCENE with the keys set (scene.sh)
+scene_set() {
+	sh "$CH75/scene.sh" "$@"
+}
 
 shot_scene() {
-	cat > "$T/shot.yaml" <<'YAML'
-material:
-  E: 68 GPa
-  nu: 0.33
-  rho: 2700 kg/m^3
-  yield: 157 MPa
-  hardening: 120 MPa
-block:
-  size: [2 mm, 2 mm, 1 mm]
-  element: 0.1 mm
-  fine: [1 mm, 1 mm]
-  fine_depth: 0.4 mm
-  ratio: 1.3
-shot:
-  density: 7800 kg/m^3
-contact:
-  alpha: 2
-run:
-  damping: 0.05
-  pass_time: 20 us
-YAML
-	dempack shots --grid 1 --passes 2 --area 0.2mm:0.2mm --speed 19 --shot-radius 0.5mm --seed 1 > "$T/s2.txt"
-	dempack shots --grid 2 --passes 1 --area 1mm:1mm --speed 19 --angle 60deg --shot-radius 0.25mm --seed 1 > "$T/s4.txt"
+	scene_set "$CH75/scene.yaml" "block.size=[2 mm, 2 mm, 1 mm]" "block.element=0.1 mm" \
+		"block.fine_depth=0.4 mm" "run.pass_time=20 us" > "$T/shot.yaml"
+	dempack -s "$T/shot.yaml" shots --grid 1 --passes 2 --area 0.2mm:0.2mm --seed 1 > "$T/s2.txt"
+	dempack -s "$T/shot.yaml" shots --grid 2 --passes 1 --area 1mm:1mm --angle 60deg --shot-radius 0.25mm --seed 1 > "$T/s4.txt"
 }
 
 @test "demshot: shots from a stream, a frame per pass, the force history" {
@@ -208,8 +198,8 @@ YAML
 
 @test "demshot: friction absent and friction 0 give the same block; the log names the effects" {
 	shot_scene
-	sed 's/  alpha: 2/  alpha: 2\n  friction: 0/' "$T/shot.yaml" > "$T/mu0.yaml"
-	sed 's/  alpha: 2/  alpha: 2\n  friction: 0.3/' "$T/shot.yaml" > "$T/mu3.yaml"
+	scene_set "$T/shot.yaml" contact.friction=0 > "$T/mu0.yaml"
+	scene_set "$T/shot.yaml" contact.friction=0.3 > "$T/mu3.yaml"
 	run --separate-stderr demshot -s "$T/shot.yaml" -o "$T/a.state" "$T/s4.txt"
 	[ "$status" -eq 0 ]
 	run --separate-stderr demshot -s "$T/mu0.yaml" -o "$T/b.state" "$T/s4.txt"
@@ -279,7 +269,7 @@ state_rows() {
 
 ckpt_setup() {
 	shot_scene
-	dempack shots --grid 1 --passes 3 --area 0.4mm:0.4mm --speed 19 --shot-radius 0.5mm --seed 1 > "$T/s3.txt"
+	dempack -s "$T/shot.yaml" shots --grid 1 --passes 3 --area 0.4mm:0.4mm --seed 1 > "$T/s3.txt"
 	demshot -s "$T/shot.yaml" -q --forces "$T/fa.txt" -o "$T/a.state" "$T/s3.txt" 2> "$T/a.log"
 	run --separate-stderr env DEMSHOT_STOP_AFTER=2 demshot -s "$T/shot.yaml" -q --forces "$T/fb.txt" --checkpoint "$T/ck" -o "$T/b.state" "$T/s3.txt"
 	[ "$status" -eq 137 ]
@@ -310,7 +300,7 @@ ckpt_setup() {
 
 @test "demshot: a checkpoint of another scene or shot stream is refused with exit 1 and no output" {
 	ckpt_setup
-	sed 's/pass_time: 20 us/pass_time: 21 us/' "$T/shot.yaml" > "$T/other.yaml"
+	scene_set "$T/shot.yaml" "run.pass_time=21 us" > "$T/other.yaml"
 	run --separate-stderr demshot -s "$T/other.yaml" --forces "$T/fb.txt" --checkpoint "$T/ck" --resume -o "$T/b.state" "$T/s3.txt"
 	echo "$stderr"
 	[ "$status" -eq 1 ]

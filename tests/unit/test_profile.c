@@ -28,86 +28,9 @@
 			fail_msg("%s = %.17g, expected %.17g (tolerance %g)", #a, a_, b_, (double)(tol)); \
 	} while (0)
 
-static char dir[64];
-
-static int setup(void **state)
-{
-	(void)state;
-	strcpy(dir, "/tmp/dem-profile-XXXXXX");
-	return mkdtemp(dir) ? 0 : -1;
-}
-
-static int teardown(void **state)
-{
-	char cmd[128];
-	(void)state;
-	snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
-	return system(cmd);
-}
-
-static const char *path(const char *name)
-{
-	static char buf[4][128];
-	static int k;
-	k = (k + 1) % 4;
-	snprintf(buf[k], sizeof buf[k], "%s/%s", dir, name);
-	return buf[k];
-}
-
-static void write_text(const char *p, const char *text)
-{
-	FILE *f = fopen(p, "w");
-	assert_non_null(f);
-	fputs(text, f);
-	fclose(f);
-}
-
-/* A structured mesh of the tensor grid, numbered as mesh.h says. */
-static void make_mesh(dem_mesh_t *m, int nx, int ny, int nz, const double *gx,
-		      const double *gy, const double *gz)
-{
-	memset(m, 0, sizeof *m);
-	m->nx = nx;
-	m->ny = ny;
-	m->nz = nz;
-	m->gx = malloc((nx + 1) * sizeof(double));
-	m->gy = malloc((ny + 1) * sizeof(double));
-	m->gz = malloc((nz + 1) * sizeof(double));
-	memcpy(m->gx, gx, (nx + 1) * sizeof(double));
-	memcpy(m->gy, gy, (ny + 1) * sizeof(double));
-	memcpy(m->gz, gz, (nz + 1) * sizeof(double));
-	m->nn = (size_t)(nx + 1) * (ny + 1) * (nz + 1);
-	m->ne = (size_t)nx * ny * nz;
-	m->X = malloc(3 * m->nn * sizeof(double));
-	m->hex = malloc(8 * m->ne * sizeof(uint32_t));
-	m->fix = calloc(m->nn, 1);
-	for (int k = 0; k <= nz; k++)
-		for (int j = 0; j <= ny; j++)
-			for (int i = 0; i <= nx; i++) {
-				size_t n = dem_mesh_node(m, i, j, k);
-				m->X[3 * n] = gx[i];
-				m->X[3 * n + 1] = gy[j];
-				m->X[3 * n + 2] = gz[k];
-			}
-	static const int di[8] = {0, 1, 1, 0, 0, 1, 1, 0}, dj[8] = {0, 0, 1, 1, 0, 0, 1, 1},
-			 dk[8] = {0, 0, 0, 0, 1, 1, 1, 1};
-	for (int k = 0; k < nz; k++)
-		for (int j = 0; j < ny; j++)
-			for (int i = 0; i < nx; i++)
-				for (int c = 0; c < 8; c++)
-					m->hex[8 * dem_mesh_elem(m, i, j, k) + c] =
-						(uint32_t)dem_mesh_node(m, i + di[c], j + dj[c], k + dk[c]);
-}
-
-static void free_mesh(dem_mesh_t *m)
-{
-	free(m->gx);
-	free(m->gy);
-	free(m->gz);
-	free(m->X);
-	free(m->hex);
-	free(m->fix);
-}
+#define TMPDIR_PREFIX "/tmp/dem-profile-"
+#include "tmpdir.h"
+#include "gridmesh.h"
 
 /* Grid lines: uniform h over [a, b] (n elements), then graded outside. */
 static double *uniform(double a, double b, int n)
@@ -379,7 +302,7 @@ static void test_layers_exact(void **state)
 	assert_int_equal(dem_profile_compute(&m, f.sig, f.eps, f.ep, &o4, &p, &e), DEM_EINPUT);
 	assert_non_null(strstr(e.msg, "no element centroid in the region"));
 	free_fields(&f);
-	free_mesh(&m);
+	dem_mesh_free(&m);
 }
 
 /* Unequal samples: the mean and spread are the volume-weighted ones of a
@@ -459,7 +382,7 @@ static void test_layers_and_bins_brute_force(void **state)
 		dem_profile_free(&p);
 	}
 	free_fields(&f);
-	free_mesh(&m);
+	dem_mesh_free(&m);
 }
 
 /* ---- surface metrics ----------------------------------------------------- */
@@ -546,7 +469,7 @@ static void test_coverage_dimples(void **state)
 		assert_close(s.area, 16e-6, 1e-10 * 16e-6);
 		free(u);
 		free(g);
-		free_mesh(&m);
+		dem_mesh_free(&m);
 	}
 	fprintf(stderr, "# coverage error: %.2e (25 um), %.2e (12.5 um)\n", err[0], err[1]);
 
@@ -579,7 +502,7 @@ static void test_coverage_dimples(void **state)
 	assert_true(s.radius == 0 && s.depth_mean == 0);
 	free(u);
 	free(g);
-	free_mesh(&m);
+	dem_mesh_free(&m);
 }
 
 /* Ra of uz = A sin(2 pi x / L) over whole periods is 2A/pi; a threshold
@@ -605,7 +528,7 @@ static void test_roughness(void **state)
 	assert_close(s.depth_max, A + 1e-6, 1e-12);
 	free(u);
 	free(g);
-	free_mesh(&m);
+	dem_mesh_free(&m);
 }
 
 int main(void)

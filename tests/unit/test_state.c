@@ -19,79 +19,9 @@
 #include "io/state.h"
 #include "io/vtu.h"
 
-static char dir[64];
-
-static int setup(void **state)
-{
-	(void)state;
-	strcpy(dir, "/tmp/dem-state-XXXXXX");
-	return mkdtemp(dir) ? 0 : -1;
-}
-
-static int teardown(void **state)
-{
-	char cmd[128];
-	(void)state;
-	snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
-	return system(cmd);
-}
-
-static const char *path(const char *name)
-{
-	static char buf[4][128];
-	static int k;
-	k = (k + 1) % 4;
-	snprintf(buf[k], sizeof buf[k], "%s/%s", dir, name);
-	return buf[k];
-}
-
-/* A structured mesh of the tensor grid gx x gy x gz, numbered as mesh.h
- * says, built here so the test does not depend on the mesher. */
-static void make_mesh(dem_mesh_t *m, int nx, int ny, int nz, const double *gx,
-		      const double *gy, const double *gz)
-{
-	memset(m, 0, sizeof *m);
-	m->nx = nx;
-	m->ny = ny;
-	m->nz = nz;
-	m->gx = malloc((nx + 1) * sizeof(double));
-	m->gy = malloc((ny + 1) * sizeof(double));
-	m->gz = malloc((nz + 1) * sizeof(double));
-	memcpy(m->gx, gx, (nx + 1) * sizeof(double));
-	memcpy(m->gy, gy, (ny + 1) * sizeof(double));
-	memcpy(m->gz, gz, (nz + 1) * sizeof(double));
-	m->nn = (size_t)(nx + 1) * (ny + 1) * (nz + 1);
-	m->ne = (size_t)nx * ny * nz;
-	m->X = malloc(3 * m->nn * sizeof(double));
-	m->hex = malloc(8 * m->ne * sizeof(uint32_t));
-	m->fix = calloc(m->nn, 1);
-	for (int k = 0; k <= nz; k++)
-		for (int j = 0; j <= ny; j++)
-			for (int i = 0; i <= nx; i++) {
-				size_t n = dem_mesh_node(m, i, j, k);
-				m->X[3 * n] = gx[i];
-				m->X[3 * n + 1] = gy[j];
-				m->X[3 * n + 2] = gz[k];
-			}
-	static const int di[8] = {0, 1, 1, 0, 0, 1, 1, 0}, dj[8] = {0, 0, 1, 1, 0, 0, 1, 1},
-			 dk[8] = {0, 0, 0, 0, 1, 1, 1, 1};
-	for (int k = 0; k < nz; k++)
-		for (int j = 0; j < ny; j++)
-			for (int i = 0; i < nx; i++)
-				for (int c = 0; c < 8; c++)
-					m->hex[8 * dem_mesh_elem(m, i, j, k) + c] =
-						(uint32_t)dem_mesh_node(m, i + di[c], j + dj[c], k + dk[c]);
-}
-
-static void free_mesh(dem_mesh_t *m)
-{
-	free(m->gx);
-	free(m->gy);
-	free(m->gz);
-	free(m->X);
-	free(m->hex);
-	free(m->fix);
-}
+#define TMPDIR_PREFIX "/tmp/dem-state-"
+#include "tmpdir.h"
+#include "gridmesh.h"
 
 /* Awkward doubles: subnormals, -0, extremes, values with 17 digits. */
 static uint64_t rng = 88172645463325252ull;
@@ -224,7 +154,7 @@ static void round_trip(int flags, int nx, int ny, int nz)
 	dem_state_reader_close(r);
 	for (int i = 0; i < 3; i++)
 		free_frame(&f[i]);
-	free_mesh(&m);
+	dem_mesh_free(&m);
 }
 
 static void test_round_trip_gzip_binary(void **state)
@@ -266,7 +196,7 @@ static void test_default_is_gzip(void **state)
 	assert_int_equal(magic[0], 0x1f);
 	assert_int_equal(magic[1], 0x8b);
 	free_frame(&f);
-	free_mesh(&m);
+	dem_mesh_free(&m);
 }
 
 static long file_size(const char *p)
@@ -343,15 +273,7 @@ static void test_truncated(void **state)
 	}
 	for (int i = 0; i < 2; i++)
 		free_frame(&f[i]);
-	free_mesh(&m);
-}
-
-static void write_text(const char *p, const char *text)
-{
-	FILE *f = fopen(p, "w");
-	assert_non_null(f);
-	fputs(text, f);
-	fclose(f);
+	dem_mesh_free(&m);
 }
 
 #define HEAD \
@@ -488,7 +410,7 @@ static void test_writer_refuses_nonfinite(void **state)
 	dem_state_writer_abort(w);
 	assert_int_equal(access(path("gone.state"), F_OK), -1);
 	free_frame(&f);
-	free_mesh(&m);
+	dem_mesh_free(&m);
 }
 
 /* A mesh without a grid (nx = 0) goes through without "# grid". */
@@ -512,7 +434,7 @@ static void test_unstructured(void **state)
 	m.nx = 2;
 	m.ny = m.nz = 1;
 	free_frame(&f);
-	free_mesh(&m);
+	dem_mesh_free(&m);
 }
 
 /* The mesher's graded box (lib/fe/mesh) goes through: its nodes lie on its
@@ -737,7 +659,7 @@ static void test_vtu(void **state)
 	assert_int_equal(dem_vtu_write("/nonexistent/dir/x.vtu", &m, NULL, 0, &e), DEM_EIO);
 	assert_non_null(strstr(e.msg, "/nonexistent/dir/x.vtu"));
 	free_frame(&f);
-	free_mesh(&m);
+	dem_mesh_free(&m);
 }
 
 int main(void)

@@ -16,39 +16,8 @@
 
 #include "io/stream.h"
 
-static char dir[64];
-
-static int setup(void **state)
-{
-	(void)state;
-	strcpy(dir, "/tmp/dem-stream-XXXXXX");
-	return mkdtemp(dir) ? 0 : -1;
-}
-
-static int teardown(void **state)
-{
-	char cmd[128];
-	(void)state;
-	snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
-	return system(cmd);
-}
-
-static const char *path(const char *name)
-{
-	static char buf[4][128];
-	static int k;
-	k = (k + 1) % 4;
-	snprintf(buf[k], sizeof buf[k], "%s/%s", dir, name);
-	return buf[k];
-}
-
-static void write_text_file(const char *p, const char *text)
-{
-	FILE *f = fopen(p, "w");
-	assert_non_null(f);
-	fputs(text, f);
-	fclose(f);
-}
+#define TMPDIR_PREFIX "/tmp/dem-stream-"
+#include "tmpdir.h"
 
 static void make_header(dem_header_t *h)
 {
@@ -139,7 +108,7 @@ static void expect_bad(const char *text, int code, const char *part)
 	dem_error_t e = {0};
 	double v[8];
 	int got = 0;
-	write_text_file(path("bad"), text);
+	write_text(path("bad"), text);
 	int rc = dem_reader_open(&r, path("bad"), &e);
 	if (rc == 0) {
 		while ((got = dem_reader_next(r, v, &e)) == 1)
@@ -186,7 +155,7 @@ static void test_lenient(void **state)
 	dem_reader_t *r;
 	dem_error_t e = {0};
 	double v[2];
-	write_text_file(path("ok"), HDR "1 2\r\n\n  3   4  \n# end 2\n");
+	write_text(path("ok"), HDR "1 2\r\n\n  3   4  \n# end 2\n");
 	assert_int_equal(dem_reader_open(&r, path("ok"), &e), 0);
 	assert_int_equal(dem_reader_next(r, v, &e), 1);
 	assert_true(v[0] == 1 && v[1] == 2);
