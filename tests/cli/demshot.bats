@@ -216,7 +216,7 @@ shot_scene() {
 
 @test "demshot: the thesis's area partial contact scheme runs, is named in the log and changes the block" {
 	shot_scene
-	sed 's/  alpha: 2/  alpha: 2\n  partial: area/' "$T/shot.yaml" > "$T/area.yaml"
+	scene_set "$T/shot.yaml" contact.partial=area > "$T/area.yaml"
 	run --separate-stderr demshot -s "$T/shot.yaml" -o "$T/p.state" "$T/s2.txt"
 	[ "$status" -eq 0 ]
 	grep -q "contact law m=1.5, partial potential" <<< "$stderr"
