@@ -279,7 +279,7 @@ int dem_shotset_begin(dem_shotset_t *S, size_t n, const dem_shot_t *sh, const do
 				double RR = b->R + q->R, dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
 				if (dd >= RR * RR * (1 - 1e-12))
 					continue;
-				double du = -(d[0] * u[0] + d[1] * u[1] + d[2] * u[2]);
+				double du = d[0] * u[0] + d[1] * u[1] + d[2] * u[2];  /* back by s: |d - s u| = RR */
 				double back = du + sqrt(du * du - dd + RR * RR);
 				for (int a = 0; a < 3; a++)
 					c[a] -= back * u[a];
