@@ -41,6 +41,26 @@ static void edge_cuts(double ax, double ay, double dx, double dy, double r, doub
 	}
 }
 
+/* The circle's arc between the directions of P and Q (relative to its
+ * centre), signed anticlockwise: its angle th, the differences of sin and
+ * cos (sx = int cos, sy = int sin) and of sin 2 theta and cos 2 theta. */
+typedef struct arc {
+	double th, sx, sy, s2, c2;
+} arc_t;
+
+static arc_t sector_arc(double px, double py, double qx, double qy)
+{
+	double lp = sqrt(px * px + py * py), lq = sqrt(qx * qx + qy * qy);
+	double cp = px / lp, sp = py / lp, cq = qx / lq, sq = qy / lq;
+	return (arc_t){
+		.th = atan2(px * qy - py * qx, px * qx + py * qy),
+		.sx = sq - sp,
+		.sy = cp - cq,
+		.s2 = 2 * (sq * cq - sp * cp),
+		.c2 = (cq * cq - sq * sq) - (cp * cp - sp * sp),
+	};
+}
+
 /* The signed piece of one edge, A -> B (relative to the circle's centre):
  * the circle's part inside the triangle (0, A, B), signed by its
  * orientation.  The edge is cut where it crosses the circle; a stretch
@@ -69,23 +89,19 @@ static void edge_piece(double ax, double ay, double bx, double by, double r, ove
 			o->Ky += cr * ((py * pp + qy * qq) / 20 + (2 * py * pq + qy * pp + py * qq + 2 * qy * pq) / 60);
 		} else {
 			/* sector between the directions of P and Q */
-			double th = atan2(cr, px * qx + py * qy);
-			double s = 0.5 * r2 * th;
-			double lp = sqrt(px * px + py * py), lq = sqrt(qx * qx + qy * qy);
-			double cp = px / lp, sp = py / lp, cq = qx / lq, sq = qy / lq;
-			double sx = sq - sp, sy = cp - cq;
-			double c = r2 * r / 3;
+			arc_t a = sector_arc(px, py, qx, qy);
+			double s = 0.5 * r2 * a.th, c = r2 * r / 3;
 			o->S += s;
-			o->Mx += c * sx;
-			o->My += c * sy;
+			o->Mx += c * a.sx;
+			o->My += c * a.sy;
 			o->J += 0.5 * s * r2;
-			o->Kx += 0.6 * c * r2 * sx;  /* r^5/5 */
-			o->Ky += 0.6 * c * r2 * sy;
-			o->th += th;
-			o->sx += sx;
-			o->sy += sy;
-			o->s2 += 2 * (sq * cq - sp * cp);
-			o->c2 += (cq * cq - sq * sq) - (cp * cp - sp * sp);
+			o->Kx += 0.6 * c * r2 * a.sx;  /* r^5/5 */
+			o->Ky += 0.6 * c * r2 * a.sy;
+			o->th += a.th;
+			o->sx += a.sx;
+			o->sy += a.sy;
+			o->s2 += a.s2;
+			o->c2 += a.c2;
 		}
 	}
 }
@@ -276,16 +292,13 @@ static void local_integrals(const branch_t *B, const double x[3], const double y
 			if (i != 1) {
 				/* sector: int_0^b w r dr = W0 / (2 pi), int_0^b 2 w' r dr =
 				 * -w0, int_0^b 2 w' r^3 dr = -2 int_0^b w r dr */
-				double th = atan2(cr, px * qx + py * qy);
-				double lp = sqrt(px * px + py * py), lq = sqrt(qx * qx + qy * qy);
-				double cp = px / lp, sp = py / lp, cq = qx / lq, sq = qy / lq;
-				double s2 = 2 * (sq * cq - sp * cp), c2 = (cq * cq - sq * sq) - (cp * cp - sp * sp);
+				arc_t a = sector_arc(px, py, qx, qy);
 				double rb2 = -B->W0 / DEM_PI;
-				*A0 += th * B->W0 / (2 * DEM_PI);
-				*B0 -= th * B->w0;
-				B2[0] += rb2 * (0.5 * th + 0.25 * s2);
-				B2[1] += rb2 * (-0.25 * c2);
-				B2[2] += rb2 * (0.5 * th - 0.25 * s2);
+				*A0 += a.th * B->W0 / (2 * DEM_PI);
+				*B0 -= a.th * B->w0;
+				B2[0] += rb2 * (0.5 * a.th + 0.25 * a.s2);
+				B2[1] += rb2 * (-0.25 * a.c2);
+				B2[2] += rb2 * (0.5 * a.th - 0.25 * a.s2);
 				continue;
 			}
 			/* triangle (0, P, Q): points s y_t, y_t = P + t (Q - P), dA =

@@ -596,29 +596,24 @@ static void shot_geometry(dem_shotset_t *S, size_t s, const double *x, const dou
  * all press on it (a shot landing on a vertex: 4 to 8 facets, each gamma
  * 1/8 or so, G near the node) it was up to twice too long, and the linear
  * law gained energy at first touch.  Serial, in shot and pair order; the
- * sums are zeroed again on the way out. */
+ * sums are zeroed as they are read. */
 static double nodes_dt(dem_shotset_t *S)
 {
+	size_t n = S->off[S->ns];
+	for (size_t k = 0; k < n; k++)
+		if (S->po[k].touch)
+			for (int a = 0; a < 3; a++)
+				S->Knode[S->fnode[S->cf[k]][a]] += S->po[k].K * S->po[k].g.N[a];
+	/* each node's sum once: read, then zeroed for the next step */
 	double dt = HUGE_VAL;
-	for (int pass = 0; pass < 3; pass++)
-		for (size_t k = 0; k < S->off[S->ns]; k++) {
-			const pair_out_t *po = &S->po[k];
-			if (!po->touch)
-				continue;
-			const uint32_t *fn = S->fnode[S->cf[k]];
+	for (size_t k = 0; k < n; k++)
+		if (S->po[k].touch)
 			for (int a = 0; a < 3; a++) {
-				uint32_t n = fn[a];
-				if (pass == 0) {
-					S->Knode[n] += po->K * po->g.N[a];
-				} else if (pass == 1) {
-					double K = S->Knode[n];
-					if (K > 0)
-						dt = fmin(dt, dem_dt_step(S->o.lambda, S->node_mass[n], K));
-				} else {
-					S->Knode[n] = 0;
-				}
+				uint32_t m = S->fnode[S->cf[k]][a];
+				if (S->Knode[m] > 0)
+					dt = fmin(dt, dem_dt_step(S->o.lambda, S->node_mass[m], S->Knode[m]));
+				S->Knode[m] = 0;
 			}
-		}
 	return dt;
 }
 
