@@ -75,16 +75,17 @@ compare() {
 			printf "%.1f %.1f %.1f %s %s %.2f %.1f %s\n", 100 * ($2 - $9) / rp, 100 * $19 / rp, $19, $4, $11, t[1] / t[2], $1 - $8, dz }'
 }
 
+# group_head TITLE REF - a knob's heading and its reference run
+group_head() {
+	printf '\n### %s\n\nAgainst `%s`.\n\n' "$1" "$2"
+}
+
 # shot_group KEY TITLE REF NAME LABEL SERIES [NAME LABEL SERIES]... - the
 # table of a knob against the run REF, and its points in pl/shot-KEY--SERIES.dat
 shot_group() {
 	key=$1 title=$2 ref=$3
 	shift 3
-	echo
-	echo "### $title"
-	echo
-	echo "Against \`$ref\`."
-	echo
+	group_head "$title" "$ref"
 	echo "| setting | elements | steps | runs | wall s | cpu s | surface sxx | peak sxx | at | compressive depth | RMS diff | of ref. peak | max diff | energy error |"
 	echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 	while [ $# -ge 3 ]; do
@@ -181,11 +182,7 @@ EOF
 form_group() {
 	key=$1 title=$2 ref=$3
 	shift 3
-	echo
-	echo "### $title"
-	echo
-	echo "Against \`$ref\`."
-	echo
+	group_head "$title" "$ref"
 	echo "| setting | elements | equations | Newton iterations | runs | wall s | cpu s | arc height mm | change um | change | max deflection mm | curvature x 1/m |"
 	echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 	while [ $# -ge 2 ]; do
