@@ -21,9 +21,8 @@
 # multi-shot model runs on the thesis's 8 x 8 x 0.9 mm block.
 #
 # The element: demshot --rule full (2 x 2 x 2 with B-bar, as --accuracy fine
-# chooses).  The default one-point element with Flanagan-Belytschko
-# hourglass control does not show the physics at d/10 (the last test, a
-# known failure).
+# chooses).  The last test checks the default one-point element (with
+# Flanagan-Belytschko hourglass control) against it.
 
 bats_require_minimum_version 1.5.0
 load helpers
