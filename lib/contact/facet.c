@@ -3,6 +3,7 @@
 #include "contact/facet.h"
 
 #include <math.h>
+#include <string.h>
 
 #include "contact/vec3.h"
 #include "core/consts.h"
@@ -121,6 +122,53 @@ void dem_circle_triangle(const double x[3], const double y[3], double r,
 	overlap_t o;
 	circle_triangle(x, y, r, &o);
 	*S = o.S, *Mx = o.Mx, *My = o.My, *J = o.J;
+}
+
+/* The point of the segment A B nearest to O into q; its squared distance. */
+static double segment_closest(const double O[3], const double A[3], const double B[3], double q[3])
+{
+	double d[3], w[3];
+	v3_sub(B, A, d);
+	v3_sub(O, A, w);
+	double dd = v3_dot(d, d), t = dd > 0 ? v3_dot(w, d) / dd : 0;
+	t = t < 0 ? 0 : t > 1 ? 1 : t;
+	for (int i = 0; i < 3; i++)
+		q[i] = A[i] + t * d[i];
+	v3_sub(O, q, w);
+	return v3_dot(w, w);
+}
+
+double dem_triangle_closest(const double O[3], const double X[3][3], double q[3])
+{
+	double e1[3], e2[3], n[3], w[3], c[3];
+	v3_sub(X[1], X[0], e1);
+	v3_sub(X[2], X[0], e2);
+	v3_sub(O, X[0], w);
+	v3_cross(e1, e2, n);
+	double nn = v3_dot(n, n);
+	if (nn > 0) {
+		/* O's projection on the plane, X0 + s e1 + t e2 */
+		v3_cross(w, e2, c);
+		double s = v3_dot(c, n) / nn;
+		v3_cross(e1, w, c);
+		double t = v3_dot(c, n) / nn;
+		if (s >= 0 && t >= 0 && s + t <= 1) {
+			double h = v3_dot(w, n) / nn;
+			for (int i = 0; i < 3; i++)
+				q[i] = O[i] - h * n[i];
+			return h * h * nn;
+		}
+	}
+	/* outside (or degenerate): the nearest of the three edges */
+	double best = HUGE_VAL, p[3];
+	for (int a = 0; a < 3; a++) {
+		double d2 = segment_closest(O, X[a], X[(a + 1) % 3], p);
+		if (d2 < best) {
+			best = d2;
+			memcpy(q, p, sizeof p);
+		}
+	}
+	return best;
 }
 
 int dem_facet_geom(const double O[3], double R, const double X[3][3], int scheme,

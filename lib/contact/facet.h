@@ -95,6 +95,11 @@ int dem_facet_geom(const double O[3], double R, const double X[3][3], int scheme
 void dem_circle_triangle(const double x[3], const double y[3], double r,
                          double *S, double *Mx, double *My, double *J);
 
+/* The point q of the triangle X[3][3] (edges and interior) nearest to O,
+ * and its squared distance, returned.  Any orientation; a degenerate
+ * triangle gives the nearest point of its edges. */
+double dem_triangle_closest(const double O[3], const double X[3][3], double q[3]);
+
 /* The forces of one pair from the kernel's output o (for the pair's
  * geometry g): on the sphere (F) and on the facet's nodes (Fnode; the sum
  * of all four is zero).  For the area and volume schemes, and in full

@@ -130,9 +130,9 @@ int dem_shotset_begin(dem_shotset_t *S, size_t n, const dem_shot_t *shots, const
  * contacts and give the step, dt_max (the block's stable step) or less if
  * a contact needs it (Box 3.1; a shot that may reach a facet within
  * dt_max is treated as starting a contact with it: its sphere enlarged by
- * 2 |v_shot| dt_max meets the facet's box, and the facet's plane cuts the
- * sphere or comes nearer than twice the closing speed of shot and facet
- * nodes times dt_max).  The hook then reuses this geometry.  Errors of the
+ * 2 |v_shot| dt_max meets the facet's box, and the triangle itself comes
+ * nearer to the sphere than twice the shot's speed plus the facet's
+ * fastest node's, times dt_max).  The hook then reuses this geometry.  Errors of the
  * candidate search (DEM_EIO without memory). */
 int dem_shotset_prepare(dem_shotset_t *S, const double *x, const double *v, double dt_max,
 			double *dt, dem_error_t *e);

@@ -387,6 +387,96 @@ static void test_volume_scheme(void **state)
 	assert_true(g.full && g.gamma == 1);
 }
 
+/* The nearest point of a triangle against brute force: the triangle
+ * sampled on a barycentric grid of 400 x 400 (the grid's nearest sample is
+ * within h/sqrt(2) of the true point, h the grid's spacing along the
+ * longest edge, so the distances agree to that), for random points in
+ * front, behind, beside the edges and the vertices, and for degenerate
+ * triangles (two vertices equal, three collinear). */
+static double brute_closest(const double O[3], const double X[3][3])
+{
+	const int N = 400;
+	double best = HUGE_VAL;
+	for (int i = 0; i <= N; i++)
+		for (int j = 0; i + j <= N; j++) {
+			double s = (double)i / N, t = (double)j / N, d2 = 0;
+			for (int k = 0; k < 3; k++) {
+				double p = X[0][k] + s * (X[1][k] - X[0][k]) + t * (X[2][k] - X[0][k]);
+				d2 += (O[k] - p) * (O[k] - p);
+			}
+			best = fmin(best, d2);
+		}
+	return sqrt(best);
+}
+
+static void test_triangle_closest(void **state)
+{
+	(void)state;
+	unsigned long s = 777;
+	double worst = 0;
+	int inside = 0, edge = 0, vertex = 0;
+	for (int t = 0; t < 400; t++) {
+		double X[3][3], O[3], q[3];
+		for (int a = 0; a < 3; a++)
+			for (int i = 0; i < 3; i++)
+				X[a][i] = 2 * urand(&s) - 1;
+		if (t % 40 == 38)        /* two vertices equal */
+			memcpy(X[2], X[1], sizeof X[1]);
+		else if (t % 40 == 39)   /* collinear */
+			for (int i = 0; i < 3; i++)
+				X[2][i] = X[0][i] + 0.3 * (X[1][i] - X[0][i]);
+		/* O: a point of the triangle's plane at area coordinates in
+		 * [-0.5, 1.5] (inside, beside an edge, beyond a vertex), moved by up
+		 * to 0.5 along each axis */
+		double bs = 2 * urand(&s) - 0.5, bt = 2 * urand(&s) - 0.5, off = 2 * urand(&s) - 1;
+		for (int i = 0; i < 3; i++)
+			O[i] = X[0][i] + bs * (X[1][i] - X[0][i]) + bt * (X[2][i] - X[0][i]) + 0.5 * off * (2 * urand(&s) - 1);
+		double d = sqrt(dem_triangle_closest(O, X, q));
+		/* q lies on the triangle: its area coordinates are in [0, 1] */
+		double h = 0;
+		for (int a = 0; a < 3; a++) {
+			double e = 0;
+			for (int i = 0; i < 3; i++)
+				e += (X[(a + 1) % 3][i] - X[a][i]) * (X[(a + 1) % 3][i] - X[a][i]);
+			h = fmax(h, sqrt(e) / 400);
+		}
+		double dq = 0;
+		for (int i = 0; i < 3; i++)
+			dq += (O[i] - q[i]) * (O[i] - q[i]);
+		assert_true(fabs(sqrt(dq) - d) <= 1e-12 * (1 + d));
+		double db = brute_closest(O, X);
+		/* never farther than a sample (brute >= true), within the grid */
+		if (d > db + 1e-12 || db - d > h)
+			fail_msg("case %d: distance %.12g, brute force %.12g (h %.3g)", t, d, db, h);
+		worst = fmax(worst, (db - d) / h);
+		/* where q fell: interior, an edge or a vertex */
+		int at_vertex = 0;
+		for (int a = 0; a < 3; a++) {
+			double e = 0;
+			for (int i = 0; i < 3; i++)
+				e += (q[i] - X[a][i]) * (q[i] - X[a][i]);
+			at_vertex |= e < 1e-24;
+		}
+		double n[3], e1[3], e2[3], w[3];
+		for (int i = 0; i < 3; i++)
+			e1[i] = X[1][i] - X[0][i], e2[i] = X[2][i] - X[0][i], w[i] = O[i] - q[i];
+		n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+		n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+		n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+		double nn = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+		double c = nn > 0 ? fabs(n[0] * w[0] + n[1] * w[1] + n[2] * w[2]) / (nn * d) : 0;
+		if (at_vertex)
+			vertex++;
+		else if (c > 1 - 1e-9)
+			inside++;
+		else
+			edge++;
+	}
+	print_message("triangle nearest point: 400 cases (%d interior, %d edge, %d vertex), "
+	              "brute force within %.2f grid spacings\n", inside, edge, vertex, worst);
+	assert_true(inside > 20 && edge > 20 && vertex > 20);
+}
+
 static void test_sphere_sphere(void **state)
 {
 	(void)state;
@@ -529,6 +619,7 @@ int main(void)
 		cmocka_unit_test(test_facet_geom_3d),
 		cmocka_unit_test(test_tiled_surface),
 		cmocka_unit_test(test_volume_scheme),
+		cmocka_unit_test(test_triangle_closest),
 		cmocka_unit_test(test_sphere_sphere),
 		cmocka_unit_test(test_potential_gradient),
 	};
