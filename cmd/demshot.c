@@ -955,11 +955,24 @@ static int run_pass(dem_fe_t *fe, dem_shotset_t *S, const struct settings *st,
 		if (dem_shotset_done(S) && en.kinetic <= st->steady * peak)
 			break;
 		if (dem_fe_time(fe) - t0 >= st->pass_time) {
-			if (!quiet)
+			if (!quiet) {
+				/* what holds the pass: shots touching, or moving
+				 * down (dem_shotset_done) */
+				size_t touch = 0, coming = 0;
+				int done = dem_shotset_done(S);
+				for (size_t i = 0; !done && i < dem_shotset_count(S); i++) {
+					const dem_shot_body_t *b = dem_shotset_body(S, i);
+					touch += b->contacts > 0;
+					coming += b->contacts == 0 && !(b->v[2] > 0);
+				}
+				char why[96] = "";
+				if (!done)
+					snprintf(why, sizeof why, "; shots: %zu in contact, %zu moving "
+						 "down out of contact", touch, coming);
 				fprintf(stderr, "%s: pass %u: not steady after %g s (kinetic "
 					"energy %.3g of its peak%s); ending it\n", PROG, pass,
-					st->pass_time, peak > 0 ? en.kinetic / peak : 0,
-					dem_shotset_done(S) ? "" : ", shots still in contact");
+					st->pass_time, peak > 0 ? en.kinetic / peak : 0, why);
+			}
 			break;
 		}
 		if (!quiet && dem_wall() > *next_report) {

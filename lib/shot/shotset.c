@@ -837,10 +837,47 @@ int dem_shotset_hook(void *ctx, double t, double dt, const double *x, const doub
 /* ---- queries ------------------------------------------------------------ */
 
 
+/* Whether the straight path of shot b (no contact: it flies freely) never
+ * meets the box lo..hi enlarged by its radius. */
+static int path_misses(const dem_shot_body_t *b, const double lo[3], const double hi[3])
+{
+	double t0 = 0, t1 = HUGE_VAL;
+	for (int i = 0; i < 3; i++) {
+		double a = lo[i] - b->R, c = hi[i] + b->R, x = b->x[i], v = b->v[i];
+		if (v == 0) {
+			if (x < a || x > c)
+				return 1;
+			continue;
+		}
+		double ta = (a - x) / v, tc = (c - x) / v;
+		t0 = fmax(t0, fmin(ta, tc));
+		t1 = fmin(t1, fmax(ta, tc));
+	}
+	return t0 > t1;
+}
+
 int dem_shotset_done(const dem_shotset_t *S)
 {
+	int falling = 0;
+	for (size_t s = 0; s < S->ns; s++) {
+		if (S->b[s].contacts > 0)
+			return 0;
+		falling |= !(S->b[s].v[2] > 0);
+	}
+	if (!falling)
+		return 1;
+	/* the box of the top surface at the last build, grown by the buffer
+	 * it may have moved since, down to the block's base */
+	double lo[3] = { HUGE_VAL, HUGE_VAL, S->mesh->gz[0] }, hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+	for (size_t k = 0; k < S->ntop; k++)
+		for (int i = 0; i < 3; i++) {
+			double x = S->built ? S->xtop[3 * k + i] : S->mesh->X[3 * (size_t)S->top[k] + i];
+			if (i < 2)
+				lo[i] = fmin(lo[i], x - S->o.buffer);
+			hi[i] = fmax(hi[i], x + S->o.buffer);
+		}
 	for (size_t s = 0; s < S->ns; s++)
-		if (S->b[s].contacts > 0 || !(S->b[s].v[2] > 0))
+		if (!(S->b[s].v[2] > 0) && !path_misses(&S->b[s], lo, hi))
 			return 0;
 	return 1;
 }

@@ -143,8 +143,10 @@ int dem_shotset_prepare(dem_shotset_t *S, const double *x, const double *v, doub
 int dem_shotset_hook(void *ctx, double t, double dt, const double *x, const double *v,
 		     double *f, dem_error_t *e);
 
-/* 1 when every shot has left: no contact at the last step and moving
- * away from the block (upward), or no shots. */
+/* 1 when every shot has left: no contact at the last step, and moving
+ * away from the block (upward) or on a straight path that never meets the
+ * box of the block's top surface (a shot gone past its side, or one sent
+ * down beside it by another shot); or no shots. */
 int dem_shotset_done(const dem_shotset_t *S);
 
 size_t dem_shotset_count(const dem_shotset_t *S);

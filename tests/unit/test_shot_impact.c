@@ -530,6 +530,60 @@ static void test_step_after_rebound(void **state)
 	free(r.u);
 }
 
+/* A shot whose path misses the block (aimed beside it, flying outward and
+ * down) has left as soon as it starts: the pass ends when the shot that
+ * hits has left, at the same step and with the same block, bit for bit,
+ * as without the other shot.  Before, "left" meant moving up, and such a
+ * shot held its pass to the pass's time limit (examples/verification, at
+ * 60 degrees).  A shot beside the block flying toward it has not left. */
+static void test_shot_misses(void **state)
+{
+	(void)state;
+	setup_t s;
+	result_t r1, r2;
+	alu_setup(&s, 2, 1.5);
+	s.gap = 1e-6;
+	run(&s, &r1);
+	s.ns = 2;
+	s.shot[1] = (dem_shot_t){ .r = 0.5e-3, .x = { s.L + 2 * 0.5e-3, 0 }, .v = { 10, 0, -19 } };
+	run(&s, &r2);
+	printf("# a shot beside the block: %ld steps with it, %ld without; its exit v (%.3g, %.3g, %.3g) m/s\n",
+	       r2.steps, r1.steps, r2.v[1][0], r2.v[1][1], r2.v[1][2]);
+	assert_int_equal(r1.rc, DEM_OK);
+	assert_int_equal(r2.rc, DEM_OK);
+	assert_int_equal(r1.steps, r2.steps);
+	dem_mesh_t mesh;
+	mesh_build(&s, &mesh);
+	assert_memory_equal(r1.u, r2.u, 3 * mesh.nn * sizeof *r1.u);
+	assert_memory_equal(r1.v[0], r2.v[0], sizeof r1.v[0]);
+	assert_true(r2.v[1][2] == -19 && r2.v[1][0] == 10);   /* it never touched */
+	free(r1.u), free(r2.u);
+
+	/* beside the block and above it, flying toward it: not left */
+	dem_contact_model_t cm;
+	dem_mat_t mat;
+	dem_fe_t *fe;
+	dem_shotset_t *S;
+	dem_error_t e = { 0 };
+	dem_fe_opts_t fo;
+	dem_fe_opts_default(&fo);
+	assert_int_equal(dem_mat_init(&mat, &s.mat, &e), DEM_OK);
+	assert_int_equal(dem_fe_create(&fe, &mesh, &mat, &fo, &e), DEM_OK);
+	assert_int_equal(dem_contact_model_init(&cm, &s.cp, &e), DEM_OK);
+	dem_shotset_opts_t so = { .rho = s.rho_shot, .lambda = s.lambda, .buffer = s.h, .gap = s.gap, .threads = 1 };
+	assert_int_equal(dem_shotset_create(&S, &mesh, dem_fe_mass(fe), &cm, &so, &e), DEM_OK);
+	dem_shot_t in = { .r = 0.5e-3, .x = { s.L + 2 * 0.5e-3, 0 }, .v = { -10, 0, -19 } };
+	assert_int_equal(dem_shotset_begin(S, 1, &in, dem_fe_coords(fe), &e), DEM_OK);
+	assert_false(dem_shotset_done(S));
+	dem_shot_t out = { .r = 0.5e-3, .x = { s.L + 2 * 0.5e-3, 0 }, .v = { 10, 0, -19 } };
+	assert_int_equal(dem_shotset_begin(S, 1, &out, dem_fe_coords(fe), &e), DEM_OK);
+	assert_true(dem_shotset_done(S));
+	dem_shotset_free(S);
+	dem_fe_free(fe);
+	dem_mat_free(&mat);
+	dem_mesh_free(&mesh);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -542,6 +596,7 @@ int main(void)
 		cmocka_unit_test(test_fast_shot),
 		cmocka_unit_test(test_effects),
 		cmocka_unit_test(test_step_after_rebound),
+		cmocka_unit_test(test_shot_misses),
 	};
 	if (getenv("ONLY"))
 		cmocka_set_test_filter(getenv("ONLY"));
