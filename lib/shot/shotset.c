@@ -13,6 +13,7 @@
 
 #include "contact/facet.h"
 #include "contact/sphere.h"
+#include "contact/vec3.h"
 #include "core/consts.h"
 #include "core/cost.h"
 #include "detect/detect.h"
@@ -508,7 +509,7 @@ static int rebuild(dem_shotset_t *S, const double *x, dem_error_t *e)
  * step (the linear law at alpha 5 gained 30 % of the energy so).  A centre
  * behind the plane within R (no touch by dem_facet_geom, yet closer than
  * R) counts as near. */
-static int facet_near(const double O[3], const double vs[3], double R, const double X[3][3],
+static int facet_near(const double O[3], double vs, double R, const double X[3][3],
 		      const double (*V)[3], double dt)
 {
 	double q[3];
@@ -517,8 +518,8 @@ static int facet_near(const double O[3], const double vs[3], double R, const dou
 		return 1;
 	double w = 0;  /* the fastest node */
 	for (int k = 0; V && k < 3; k++)
-		w = fmax(w, sqrt(V[k][0] * V[k][0] + V[k][1] * V[k][1] + V[k][2] * V[k][2]));
-	return gap < 2 * (sqrt(vs[0] * vs[0] + vs[1] * vs[1] + vs[2] * vs[2]) + w) * dt;
+		w = fmax(w, v3_norm(V[k]));
+	return gap < 2 * (vs + w) * dt;
 }
 
 /* Geometry of shot s against its candidate facets at x: which touch (po),
@@ -535,6 +536,7 @@ static void shot_geometry(dem_shotset_t *S, size_t s, const double *x, const dou
 {
 	dem_shot_body_t *b = &S->b[s];
 	double R = b->R, R2 = R * R, Rr2 = (R + reach) * (R + reach), dtmin = HUGE_VAL;
+	double sp = v3_norm(b->v);
 	double mnear = HUGE_VAL;
 	int nc = 0;
 
@@ -561,7 +563,7 @@ static void shot_geometry(dem_shotset_t *S, size_t s, const double *x, const dou
 				for (int a = 0; a < 3; a++)
 					for (int i = 0; i < 3; i++)
 						V[a][i] = v[3 * (size_t)fn[a] + i];
-			if (facet_near(b->x, b->v, R, (const double (*)[3])X, v ? (const double (*)[3])V : NULL,
+			if (facet_near(b->x, sp, R, (const double (*)[3])X, v ? (const double (*)[3])V : NULL,
 				       dt_max))
 				mnear = fmin(mnear, S->fmass[S->cf[k]]);
 			continue;
@@ -575,7 +577,6 @@ static void shot_geometry(dem_shotset_t *S, size_t s, const double *x, const dou
 		dtmin = fmin(dtmin, dem_dt_step(S->o.lambda, mass, K));
 	}
 	if (nc == 0 && mnear < HUGE_VAL) {
-		double sp = sqrt(b->v[0] * b->v[0] + b->v[1] * b->v[1] + b->v[2] * b->v[2]);
 		dtmin = dem_contact_dt(&S->cm, b->kn, dem_contact_meff(b->M, mnear), 0, sp, S->o.lambda);
 	}
 	b->dt = dtmin;
