@@ -2,6 +2,7 @@
 #include "core/afile.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
@@ -65,10 +66,31 @@ int dem_afile_open(dem_afile_t *a, const char *path, const char *mode,
 		   dem_error_t *e)
 {
 	size_t n = strlen(path) + sizeof ".tmp.XXXXXX";
+	struct stat st;
 	int fd;
 
 	memset(a, 0, sizeof *a);
-	if (!(a->path = strdup(path)) || !(a->tmp = malloc(n))) {
+	if (!(a->path = strdup(path))) {
+		dem_afile_abort(a);
+		return dem_error_nomem(e, path);
+	}
+	if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+		/* a device, a FIFO, a directory: written in place or refused
+		 * by open (EISDIR), never renamed over */
+		fd = open(path, O_WRONLY | O_CLOEXEC);
+		if (fd < 0 || (mode && !(a->f = fdopen(fd, mode)))) {
+			int err = errno;
+
+			if (fd >= 0)
+				close(fd);
+			dem_afile_abort(a);
+			return dem_error_set(e, DEM_EIO, "%s: %s", path,
+					     strerror(err));
+		}
+		a->fd = fd;
+		return DEM_OK;
+	}
+	if (!(a->tmp = malloc(n))) {
 		dem_afile_abort(a);
 		return dem_error_nomem(e, path);
 	}
@@ -99,11 +121,11 @@ int dem_afile_commit(dem_afile_t *a, int sync, dem_error_t *e)
 	errno = 0;
 	if (a->f) {     /* else the caller has closed its descriptor */
 		bad = ferror(a->f) || fflush(a->f) != 0 ||
-		      (sync && fsync(fileno(a->f)) != 0);
+		      (sync && a->tmp && fsync(fileno(a->f)) != 0);
 		bad |= fclose(a->f) != 0;
 		a->f = NULL;
 	}
-	if (!bad && rename(a->tmp, a->path) == 0)
+	if (!bad && (!a->tmp || rename(a->tmp, a->path) == 0))
 		dem_tmp_forget(a->tmp);
 	else {
 		dem_error_set(e, DEM_EIO, "%s: %s", a->path,

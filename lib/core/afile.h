@@ -1,7 +1,9 @@
 /* afile.h - a file written atomically: created under a temporary name
  * beside its final path (path.tmp.XXXXXX, mode 0644) and renamed into place
  * only when complete, so a reader never sees a half-written file and a
- * failure leaves no file behind (DESIGN.md, "Errors"). */
+ * failure leaves no file behind (DESIGN.md, "Errors").  A path that exists
+ * and is not a regular file (/dev/null, a terminal, a FIFO) is written in
+ * place: renaming over it would replace the device with a file. */
 #ifndef DEM_CORE_AFILE_H
 #define DEM_CORE_AFILE_H
 
@@ -12,7 +14,8 @@
 typedef struct dem_afile {
 	FILE *f;                /* write here (NULL when opened without a mode) */
 	int fd;                 /* the temporary file's descriptor */
-	char *path, *tmp;
+	char *path, *tmp;       /* tmp NULL: path itself is written (not a
+				 * regular file), nothing to rename */
 } dem_afile_t;
 
 /* Create the temporary file; mode as for fdopen ("w" or "wb").  DEM_EIO

@@ -1,14 +1,17 @@
 /* test_afile.c - lib/core/afile: the file appears only on commit, whole;
- * abort and failures leave nothing. */
+ * abort and failures leave nothing; a path that is not a regular file is
+ * written in place, never renamed over. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <cmocka.h>
 
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "core/afile.h"
@@ -81,11 +84,62 @@ static void test_afile_fd(void **state)
 	assert_int_equal(rmdir(dir), 0);                /* empty: no temporary left */
 }
 
+/* A FIFO (as a device such as /dev/null) is written in place: the reader
+ * gets the bytes and the FIFO is still a FIFO, with no temporary beside
+ * it.  Renaming a temporary over it (as for a regular file) would leave a
+ * regular file in its place: as root, `-o /dev/null` replaced the device.
+ * A directory is refused, naming it. */
+static void test_afile_not_regular(void **state)
+{
+	char dir[] = "/tmp/dem-test-afile-XXXXXX", path[64], buf[16] = {0};
+	dem_afile_t a;
+	dem_error_t e = {0};
+	struct stat st;
+
+	(void)state;
+	assert_non_null(mkdtemp(dir));
+	snprintf(path, sizeof path, "%s/fifo", dir);
+	assert_int_equal(mkfifo(path, 0600), 0);
+	int rd = open(path, O_RDONLY | O_NONBLOCK);     /* a reader, so the writer does not block */
+	assert_true(rd >= 0);
+	assert_int_equal(dem_afile_open(&a, path, "w", &e), DEM_OK);
+	fputs("hello", a.f);
+	assert_int_equal(dem_afile_commit(&a, 1, &e), DEM_OK);  /* sync: no fsync on a FIFO */
+	assert_int_equal(read(rd, buf, sizeof buf - 1), 5);
+	assert_string_equal(buf, "hello");
+	close(rd);
+	assert_int_equal(lstat(path, &st), 0);
+	assert_true(S_ISFIFO(st.st_mode));
+	/* abort of a FIFO write removes nothing */
+	rd = open(path, O_RDONLY | O_NONBLOCK);
+	assert_int_equal(dem_afile_open(&a, path, NULL, &e), DEM_OK);
+	assert_int_equal(close(a.fd), 0);
+	dem_afile_abort(&a);
+	close(rd);
+	assert_int_equal(lstat(path, &st), 0);
+	assert_true(S_ISFIFO(st.st_mode));
+	unlink(path);
+	/* a directory: refused */
+	assert_int_equal(dem_afile_open(&a, dir, "w", &e), DEM_EIO);
+	assert_non_null(strstr(e.msg, dir));
+	dem_afile_abort(&a);
+	assert_int_equal(rmdir(dir), 0);                /* empty: no temporary left */
+	/* /dev/null itself, where it is a character device */
+	if (stat("/dev/null", &st) == 0 && S_ISCHR(st.st_mode)) {
+		assert_int_equal(dem_afile_open(&a, "/dev/null", "w", &e), DEM_OK);
+		fputs("hello", a.f);
+		assert_int_equal(dem_afile_commit(&a, 1, &e), DEM_OK);
+		assert_int_equal(stat("/dev/null", &st), 0);
+		assert_true(S_ISCHR(st.st_mode));
+	}
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_afile),
 		cmocka_unit_test(test_afile_fd),
+		cmocka_unit_test(test_afile_not_regular),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
