@@ -956,17 +956,9 @@ static int run_pass(dem_fe_t *fe, dem_shotset_t *S, const struct settings *st,
 			break;
 		if (dem_fe_time(fe) - t0 >= st->pass_time) {
 			if (!quiet) {
-				/* what holds the pass: shots touching, or moving
-				 * down (dem_shotset_done) */
-				size_t touch = 0, coming = 0;
-				int done = dem_shotset_done(S);
-				for (size_t i = 0; !done && i < dem_shotset_count(S); i++) {
-					const dem_shot_body_t *b = dem_shotset_body(S, i);
-					touch += b->contacts > 0;
-					coming += b->contacts == 0 && !(b->v[2] > 0);
-				}
+				size_t touch, coming;
 				char why[96] = "";
-				if (!done)
+				if (dem_shotset_holding(S, &touch, &coming) > 0)
 					snprintf(why, sizeof why, "; shots: %zu in contact, %zu moving "
 						 "down out of contact", touch, coming);
 				fprintf(stderr, "%s: pass %u: not steady after %g s (kinetic "

@@ -42,6 +42,11 @@ struct dem_shotset {
 	double *Knode;            /* contact stiffness summed on each node this step (zero between) */
 	uint32_t *top;            /* surface nodes */
 	double *xtop;             /* their coordinates at the last build */
+	/* what a shot out of contact must reach to touch the block: the box
+	 * of the top surface grown by the buffer it may have moved since,
+	 * down to the base; of the undeformed mesh (ref) and at the last
+	 * build (at) */
+	double ref_lo[3], ref_hi[3], at_lo[3], at_hi[3];
 
 	/* shots */
 	size_t ns, scap;
@@ -103,6 +108,23 @@ static void integrate_spin(dem_shotset_t *S, double h, double dt)
 	}
 }
 
+/* The box lo..hi of the top surface nodes at x (S->top), grown by the
+ * buffer, down to the block's base. */
+static void top_box(const dem_shotset_t *S, const double *x, double lo[3], double hi[3])
+{
+	lo[0] = lo[1] = HUGE_VAL;
+	lo[2] = S->mesh->gz[0];
+	hi[0] = hi[1] = hi[2] = -HUGE_VAL;
+	for (size_t k = 0; k < S->ntop; k++) {
+		const double *p = x + 3 * (size_t)S->top[k];
+		for (int i = 0; i < 3; i++) {
+			if (i < 2)
+				lo[i] = fmin(lo[i], p[i] - S->o.buffer);
+			hi[i] = fmax(hi[i], p[i] + S->o.buffer);
+		}
+	}
+}
+
 static int facets_build(dem_shotset_t *S, dem_error_t *e)
 {
 	const dem_mesh_t *m = S->mesh;
@@ -149,6 +171,7 @@ static int facets_build(dem_shotset_t *S, dem_error_t *e)
 			S->top[n++] = (uint32_t)dem_mesh_node(m, i, j, nz);
 	S->nf = nf;
 	S->ntop = ntop;
+	top_box(S, m->X, S->ref_lo, S->ref_hi);
 	free(deg);
 	return DEM_OK;
 }
@@ -488,6 +511,7 @@ static int rebuild(dem_shotset_t *S, const double *x, dem_error_t *e)
 		memcpy(S->xshot + 3 * s, S->b[s].x, sizeof S->b[s].x);
 	for (size_t k = 0; k < S->ntop; k++)
 		memcpy(S->xtop + 3 * k, x + 3 * (size_t)S->top[k], 3 * sizeof *x);
+	top_box(S, x, S->at_lo, S->at_hi);
 	S->built = 1;
 	S->st.rebuilds++;
 	S->st.detect_s += dem_wall() - t0;
@@ -857,30 +881,28 @@ static int path_misses(const dem_shot_body_t *b, const double lo[3], const doubl
 	return t0 > t1;
 }
 
+size_t dem_shotset_holding(const dem_shotset_t *S, size_t *touching, size_t *coming)
+{
+	const double *lo = S->built ? S->at_lo : S->ref_lo, *hi = S->built ? S->at_hi : S->ref_hi;
+	size_t nt = 0, nc = 0;
+
+	for (size_t s = 0; s < S->ns; s++) {
+		const dem_shot_body_t *b = &S->b[s];
+		if (b->contacts > 0)
+			nt++;
+		else if (!(b->v[2] > 0) && !path_misses(b, lo, hi))
+			nc++;
+	}
+	if (touching)
+		*touching = nt;
+	if (coming)
+		*coming = nc;
+	return nt + nc;
+}
+
 int dem_shotset_done(const dem_shotset_t *S)
 {
-	int falling = 0;
-	for (size_t s = 0; s < S->ns; s++) {
-		if (S->b[s].contacts > 0)
-			return 0;
-		falling |= !(S->b[s].v[2] > 0);
-	}
-	if (!falling)
-		return 1;
-	/* the box of the top surface at the last build, grown by the buffer
-	 * it may have moved since, down to the block's base */
-	double lo[3] = { HUGE_VAL, HUGE_VAL, S->mesh->gz[0] }, hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
-	for (size_t k = 0; k < S->ntop; k++)
-		for (int i = 0; i < 3; i++) {
-			double x = S->built ? S->xtop[3 * k + i] : S->mesh->X[3 * (size_t)S->top[k] + i];
-			if (i < 2)
-				lo[i] = fmin(lo[i], x - S->o.buffer);
-			hi[i] = fmax(hi[i], x + S->o.buffer);
-		}
-	for (size_t s = 0; s < S->ns; s++)
-		if (!(S->b[s].v[2] > 0) && !path_misses(&S->b[s], lo, hi))
-			return 0;
-	return 1;
+	return dem_shotset_holding(S, NULL, NULL) == 0;
 }
 
 size_t dem_shotset_count(const dem_shotset_t *S)

@@ -148,6 +148,11 @@ int dem_shotset_hook(void *ctx, double t, double dt, const double *x, const doub
  * box of the block's top surface (a shot gone past its side, or one sent
  * down beside it by another shot); or no shots. */
 int dem_shotset_done(const dem_shotset_t *S);
+/* The shots that keep the pass going (dem_shotset_done is 1 when there is
+ * none): those touching the block at the last step (touching) and those
+ * out of contact moving down on a path that meets the box of its top
+ * surface (coming); either pointer may be NULL. */
+size_t dem_shotset_holding(const dem_shotset_t *S, size_t *touching, size_t *coming);
 
 size_t dem_shotset_count(const dem_shotset_t *S);
 const dem_shot_body_t *dem_shotset_body(const dem_shotset_t *S, size_t i);
