@@ -408,6 +408,14 @@ int main(int argc, char **argv)
 		goto done;
 	}
 	double t = dem_wall();
+	if (mat.flags & DEM_MAT_KIN) {
+		/* the profile carries no back-stresses: the strip's material
+		 * is the law's monotonic curve (demform(1)) */
+		dem_mat_kin_as_iso(&mat);
+		if (!cl.com.quiet)
+			fprintf(stderr, "demform: kinematic hardening read as its monotonic "
+				"curve (the profile has no back-stresses)\n");
+	}
 	if ((rc = dem_plate_mesh(&set.plate, &mesh, &e)) ||
 	    (rc = dem_form_create(&form, &mesh, &mat, &e)))
 		goto out;

@@ -382,9 +382,11 @@ static void log_effects(const struct settings *st)
 	fprintf(stderr, "%s: effects: %s", PROG,
 		m->flags & DEM_MAT_PLASTIC ? "J2 plasticity" : "elasticity");
 	if (m->flags & DEM_MAT_PLASTIC)
-		fprintf(stderr, " (%s hardening)", m->nhard > 1 ? "table" : "linear");
+		fprintf(stderr, " (%s hardening)", dem_mat_law_name(m));
+	if (m->flags & DEM_MAT_KIN)
+		fprintf(stderr, ", %d back-stress%s", m->nkin, m->nkin > 1 ? "es" : "");
 	if (m->flags & DEM_MAT_RATE)
-		fprintf(stderr, ", rate dependence (m = %g)", m->rate_m);
+		fprintf(stderr, ", rate dependence (%s)", dem_mat_rate_name(m));
 	fprintf(stderr, ", %s strain, %s", st->fe.large ? "large" : "small",
 		st->fe.rule == DEM_FE_FULL ? "full 2x2x2 B-bar integration"
 		: "one-point integration with hourglass control");

@@ -16,7 +16,7 @@
 #                       Eqs. 3.70-3.76; ratio chosen here)
 #            unload     contact.unload 2 (hysteresis, Eqs. 3.63-3.67;
 #                       chosen here: restitution 2^(-1/3) = 0.79)
-#            rate       material.rate_exponent 0.0455, rate_ref 1/s (the
+#            rate       material.rate: power law, m 0.0455, ref 1/s (the
 #                       aluminium of Table 7.2, Al5052)
 #            undamped   no global damping (run.damping left out)
 #
@@ -57,7 +57,7 @@ friction) con="  friction: 0.2" ;;
 friction0) con="  friction: 0" ;;
 cdamping) con="  damping: 0.1" ;;
 unload) con="  unload: 2" ;;
-rate) mat="  rate_exponent: 0.0455" ;;
+rate) mat="  rate: {law: power, m: 0.0455, ref: 1 1/s}" ;;
 undamped) damp= ;;
 *) echo "shot-run.sh: $name: unknown effect '$effect'" >&2; exit 2 ;;
 esac

@@ -82,6 +82,8 @@ struct dem_fe {
 	/* element state */
 	size_t nblk;
 	double *sig, *ep, *Qs, *eps, *kdt;
+	double *kin;          /* back-stresses, [6 nkin][NB] per batch (NULL: none) */
+	int nh;               /* dem_mat_nhist */
 	uint8_t *run;         /* one-point block whose element e has the nodes
 			       * of element 0 plus e (a run along a row) */
 	int hg;               /* hourglass control on */
@@ -164,6 +166,7 @@ void dem_fe_free(dem_fe_t *fe)
 		return;
 	free(fe->x), free(fe->v), free(fe->fi), free(fe->fx), free(fe->mass);
 	free(fe->sig), free(fe->ep), free(fe->Qs), free(fe->eps), free(fe->kdt);
+	free(fe->kin);
 	free(fe->run);
 	free(fe->slab), free(fe->slab_of_k);
 	for (int i = 0; i < fe->npl; i++)
@@ -200,6 +203,7 @@ int dem_fe_create(dem_fe_t **out, const dem_mesh_t *mesh, const dem_mat_t *mat,
 	fe->o = *o;
 	fe->nn = mesh->nn;
 	fe->ne = mesh->ne;
+	fe->nh = dem_mat_nhist(mat);
 	fe->hg = o->rule == DEM_FE_1PT && (o->hg_stiff > 0 || o->hg_visc > 0);
 	size_t nn = fe->nn, ne = fe->ne;
 	fe->nthr = o->threads > 0 ? o->threads : ne >= PAR_MIN ? omp_get_max_threads() : 1;
@@ -238,6 +242,8 @@ int dem_fe_create(dem_fe_t **out, const dem_mesh_t *mesh, const dem_mat_t *mat,
 	if (o->rule == DEM_FE_1PT) {
 		fe->sig = calloc(nblk * 6 * NB, sizeof *fe->sig);
 		fe->ep = calloc(nblk * NB, sizeof *fe->ep);
+		if (fe->nh)
+			fe->kin = calloc(nblk * (size_t)fe->nh * NB, sizeof *fe->kin);
 		fe->Qs = calloc(nblk * 12 * NB, sizeof *fe->Qs);
 		fe->run = calloc(nblk, sizeof *fe->run);
 		if (o->large) {
@@ -247,12 +253,14 @@ int dem_fe_create(dem_fe_t **out, const dem_mesh_t *mesh, const dem_mat_t *mat,
 	} else {
 		fe->sig = calloc(ne * 2 * 6 * NB, sizeof *fe->sig);
 		fe->ep = calloc(ne * 2 * NB, sizeof *fe->ep);
+		if (fe->nh)
+			fe->kin = calloc(ne * 2 * (size_t)fe->nh * NB, sizeof *fe->kin);
 		if (o->large) {
 			fe->eps = calloc(ne * 6, sizeof *fe->eps);
 			fe->kdt = calloc(ne, sizeof *fe->kdt);
 		}
 	}
-	if (!fe->sig || !fe->ep || (o->rule == DEM_FE_1PT && (!fe->Qs || !fe->run)) ||
+	if (!fe->sig || !fe->ep || (fe->nh && !fe->kin) || (o->rule == DEM_FE_1PT && (!fe->Qs || !fe->run)) ||
 	    (o->large && (!fe->eps || !fe->kdt)))
 		goto nomem;
 
@@ -622,7 +630,8 @@ static inline __attribute__((always_inline)) void slab_1pt(dem_fe_t *fe, slab_t 
 		vec4 s0[6];
 		for (int k = 0; k < 6; k++)
 			s0[k] = *(const uvec4 *)(sg + k * NB);
-		unsigned pm = dem_mat_update_batch(m, dt, b.d[0], large ? b.w[0] : NULL, sg, ep, wp);
+		double *kn = fe->kin ? fe->kin + B * (size_t)fe->nh * NB : NULL;
+		unsigned pm = dem_mat_update_batch(m, dt, b.d[0], large ? b.w[0] : NULL, sg, ep, kn, wp);
 		/* energies of the lanes (vector across the batch) */
 		vec4 vol, dE = { 0 }, q[12];
 		vol = *(const uvec4 *)(b.vol);
@@ -795,7 +804,9 @@ static inline __attribute__((always_inline)) void slab_full(dem_fe_t *fe, slab_t
 		unsigned pm = 0;
 		for (int q = 0; q < 2; q++)
 			pm |= dem_mat_update_batch(m, dt, D[q], large ? W[q] : NULL, sg + q * 6 * NB,
-						   ep + q * NB, wp[q]) << (NB * q);
+						   ep + q * NB,
+						   fe->kin ? fe->kin + (el * 2 + (size_t)q) * (size_t)fe->nh * NB : NULL,
+						   wp[q]) << (NB * q);
 		double sp[48], dm[6] = { 0 }, wm[3] = { 0 };
 		for (int p = 0; p < 8; p++) {
 			int q = p / NB, l = p % NB;
@@ -1124,6 +1135,8 @@ static int ckpt_items(const dem_fe_t *cfe, ckpt_item_t *it)
 	ITEM("fi", fe->fi, 3 * nn * d);
 	ITEM("sig", fe->sig, (full ? ne * 2 * 6 * NB : 6 * nl) * d);
 	ITEM("ep", fe->ep, (full ? ne * 2 * NB : nl) * d);
+	if (fe->kin)
+		ITEM("kin", fe->kin, (full ? ne * 2 : nl) * (size_t)fe->nh * NB * d);
 	if (fe->Qs)
 		ITEM("Qs", fe->Qs, 12 * nl * d);
 	if (fe->eps)
@@ -1198,6 +1211,19 @@ static void ckpt_head(const dem_fe_t *fe, ckpt_head_t *h)
 	if (a->nhard > 0) {
 		c = crc_add(c, a->hep, (size_t)a->nhard * sizeof *a->hep);
 		c = crc_add(c, a->hsy, (size_t)a->nhard * sizeof *a->hsy);
+	}
+	if (a->flags & DEM_MAT_GENERAL) {
+		/* the laws beyond the piecewise linear curve (linear and table
+		 * materials keep the checksum of earlier checkpoints) */
+		double gp[11 + 2 * DEM_MAT_NKIN] = {
+			(double)a->law, a->voce_Q, a->voce_b, a->voce_H, a->jc_A, a->jc_B, a->jc_n,
+			(double)a->rate_law, a->cs_D, a->cs_ip, a->jc_C
+		};
+		for (int i = 0; i < a->nkin; i++) {
+			gp[11 + 2 * i] = a->kin_C[i];
+			gp[12 + 2 * i] = a->kin_gamma[i];
+		}
+		c = crc_add(c, gp, sizeof gp);
 	}
 	h->mat_crc = (uint32_t)c;
 }

@@ -824,7 +824,7 @@ int dem_hex8_static(const dem_mat_t *m, dem_hex8_rule_t rule, const double X[24]
 			double *s = h->sig + 6 * p, w;
 			memcpy(s, hn->sig + 6 * p, 6 * sizeof *s);
 			h->ep[p] = hn->ep[p];
-			dem_mat_update_tangent(m, de, 0, s, &h->ep[p], &w, Dg[p]);
+			dem_mat_update_tangent(m, de, 0, s, &h->ep[p], NULL, &w, Dg[p]);
 			wpl += w * g.wdet[p];
 			for (int n = 0; n < nb; n++)
 				for (int i = 0; i < 3; i++) {

@@ -218,7 +218,7 @@ int dem_hex8_large(const dem_mat_t *m, int eas, const double X[24],
 			double *s = h->sig + 6 * p;
 			memcpy(s, hn->sig + 6 * p, 6 * sizeof *s);
 			h->ep[p] = hn->ep[p];
-			dem_mat_update_tangent(m, de, 0, s, &h->ep[p], &w, Dg[p]);
+			dem_mat_update_tangent(m, de, 0, s, &h->ep[p], NULL, &w, Dg[p]);
 			wpl += w * geo.wdet[p];
 			for (int n = 0; n < nb; n++) {
 				bnl(g[p][n], n < 8 ? Fg[p] : I3, B[p][n]);

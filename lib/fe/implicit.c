@@ -104,8 +104,11 @@ void dem_form_opts_default(dem_form_opts_t *o)
 int dem_form_create(dem_form_t **fp, const dem_mesh_t *mesh, const dem_mat_t *m,
 		    dem_error_t *e)
 {
-	dem_form_t *f = calloc(1, sizeof *f);
 	*fp = NULL;
+	if (dem_mat_nhist(m))
+		return dem_error_set(e, DEM_EINPUT, "form: the static stage keeps no back-stresses: "
+				     "read a kinematic law with dem_mat_kin_as_iso() first");
+	dem_form_t *f = calloc(1, sizeof *f);
 	if (!f)
 		return dem_error_nomem(e, "form model");
 	f->mesh = mesh;

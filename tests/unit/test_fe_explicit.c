@@ -58,7 +58,7 @@ static void steel(dem_mat_t *m, double rate_m)
 	for (int i = 0; i < 8; i++)
 		sy[i] = T71_SY[i] * MPA;
 	dem_mat_param_t p = { .E = 210 * GPA, .nu = 0.3, .rho = 7800, .nhard = 8,
-			      .hard_ep = T71_EP, .hard_sy = sy, .rate_m = rate_m };
+			      .hard_ep = T71_EP, .hard_sy = sy, .rate_m = rate_m, .rate_ref = 1 };
 	dem_error_t e = { 0 };
 	assert_int_equal(dem_mat_init(m, &p, &e), DEM_OK);
 }

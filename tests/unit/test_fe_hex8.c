@@ -412,7 +412,7 @@ static void test_patch_1pt(void **state)
 			assert_true(fabs(d[i] - eps_x[i]) < 1e-10 * vmax(eps_x, 6));
 		/* small strain: the rate over dt = 1 is the strain */
 		double sig[6] = { 0 }, ep = 0, wp;
-		dem_mat_update(&mat, d, 1, sig, &ep, &wp);
+		dem_mat_update(&mat, d, 1, sig, &ep, NULL, &wp);
 		for (int i = 0; i < 6; i++)
 			assert_true(fabs(sig[i] - sig_x[i]) < 1e-10 * vmax(sig_x, 6));
 		assert_true(vmax(g.q, 12) < 1e-14);
@@ -472,7 +472,7 @@ static void test_patch_full(void **state)
 					assert_true(fabs(g.L[p][k] - LA[k]) < 1e-10 * vmax(LA, 9));
 				double d[6], w[3], ep = 0, wp;
 				dem_hex8_strain_rate(g.L[p], d, w);
-				dem_mat_update(&mat, d, 1, sig + 6 * p, &ep, &wp);
+				dem_mat_update(&mat, d, 1, sig + 6 * p, &ep, NULL, &wp);
 				for (int i = 0; i < 6; i++)
 					assert_true(fabs(sig[6 * p + i] - sig_x[i]) < 1e-10 * vmax(sig_x, 6));
 			}
@@ -591,7 +591,7 @@ static void test_rigid_body(void **state)
 			    fabs(w[2] + om[1]) < 1e-13);
 		assert_true(vmax(g.q, 12) < 1e-13);
 		double sig[6] = { 0 }, ep = 0, wp, f[24];
-		dem_mat_update(&mat, d, 1e-3, sig, &ep, &wp);
+		dem_mat_update(&mat, d, 1e-3, sig, &ep, NULL, &wp);
 		double ks, cv, Qs[12] = { 0 }, Q[12];
 		dem_hex8_hg_coef(&g, &mat, 0.1, 0.1, &ks, &cv);
 		dem_hex8_hg_resist(&g, ks, cv, 1e-3, Qs, Q);
@@ -710,7 +710,7 @@ static void test_stiffness_rank(void **state)
 	dem_hex8_1pt_rate(&g, u);
 	double d[6], w[3], sig[6] = { 0 }, ep = 0, wp, Qs[12] = { 0 }, Q[12];
 	dem_hex8_strain_rate(g.L, d, w);
-	dem_mat_update(&mat, d, 1, sig, &ep, &wp);
+	dem_mat_update(&mat, d, 1, sig, &ep, NULL, &wp);
 	dem_hex8_hg_resist(&g, ks, 0, 1, Qs, Q);
 	dem_hex8_1pt_force(&g, sig, Q, f);
 	for (int r = 0; r < 24; r++) {
@@ -759,7 +759,7 @@ static void test_full_vs_static(void **state)
 		for (int p = 0; p < 8; p++) {
 			double d[6], w[3], ep = 0, wp;
 			dem_hex8_strain_rate(g.L[p], d, w);
-			dem_mat_update(&mat, d, 1, sig + 6 * p, &ep, &wp);
+			dem_mat_update(&mat, d, 1, sig + 6 * p, &ep, NULL, &wp);
 		}
 		dem_hex8_full_force(&g, sig, bbar, f);
 		dem_hex8_hist_t hn = HZERO, h = HZERO;

@@ -44,7 +44,8 @@ static void make_t71(dem_mat_t *m, double *ep, double *sy)
 
 static void make_linear(dem_mat_t *m, double E, double nu, double sy0, double H, double rate_m)
 {
-	dem_mat_param_t p = { .E = E, .nu = nu, .rho = 2700, .sy0 = sy0, .H = H, .rate_m = rate_m };
+	dem_mat_param_t p = { .E = E, .nu = nu, .rho = 2700, .sy0 = sy0, .H = H, .rate_m = rate_m,
+			      .rate_law = rate_m > 0 ? DEM_RATE_POWER : DEM_RATE_NONE, .rate_ref = 1 };
 	dem_error_t e = { 0 };
 	assert_int_equal(dem_mat_init(m, &p, &e), DEM_OK);
 }
@@ -70,7 +71,7 @@ static void test_elastic(void **state)
 	assert_true(rel(m.wave, sqrt((m.K + 4 * m.G / 3) / 7800)) < 1e-15);
 
 	double d[6] = { 1e-3, -2e-4, 3e-4, 5e-4, -1e-4, 2e-4 }, s[6] = { 0 }, ep = 0, wp = 1;
-	assert_int_equal(dem_mat_update(&m, d, 1e-6, s, &ep, &wp), 0);
+	assert_int_equal(dem_mat_update(&m, d, 1e-6, s, &ep, NULL, &wp), 0);
 	double tr = d[0] + d[1] + d[2];
 	for (int i = 0; i < 3; i++)
 		assert_true(rel(s[i], m.lam * tr + 2 * m.G * d[i]) < 1e-14);
@@ -80,12 +81,12 @@ static void test_elastic(void **state)
 
 	double eps[6] = { 0 }, sig[6] = { 0 };
 	ep = 0;
-	assert_int_equal(dem_mat_uniaxial(&m, 1e-3, 0, eps, sig, &ep), DEM_OK);
+	assert_int_equal(dem_mat_uniaxial(&m, 1e-3, 0, eps, sig, &ep, NULL), DEM_OK);
 	assert_true(rel(sig[0] / eps[0], 200 * GPA) < 1e-12);
 	assert_true(rel(-eps[1] / eps[0], 0.25) < 1e-12);
 	assert_true(fabs(sig[1]) < 1e-6 && fabs(sig[2]) < 1e-6);
 	/* no yield stress: elastic at any stress */
-	assert_int_equal(dem_mat_uniaxial(&m, 0.5, 0, eps, sig, &ep), DEM_OK);
+	assert_int_equal(dem_mat_uniaxial(&m, 0.5, 0, eps, sig, &ep, NULL), DEM_OK);
 	assert_true(ep == 0);
 	dem_mat_free(&m);
 }
@@ -106,7 +107,17 @@ static void test_invalid(void **state)
 		{ .E = 1e9, .nu = 0.3, .nhard = 2, .hard_ep = ep_bad0, .hard_sy = sy_ok },
 		{ .E = 1e9, .nu = 0.3, .nhard = 2, .hard_ep = ep_ok, .hard_sy = sy_down },
 		{ .E = 1e9, .nu = 0.3, .rate_m = 0.05 },   /* rate without yield */
-		{ .E = 1e9, .nu = 0.3, .sy0 = 1e6, .rate_m = 1.5 },
+		{ .E = 1e9, .nu = 0.3, .sy0 = 1e6, .rate_m = 1.5, .rate_ref = 1 },
+		{ .E = 1e9, .nu = 0.3, .sy0 = 1e6, .rate_m = 0.05 },   /* no reference rate */
+		{ .E = 1e9, .nu = 0.3, .sy0 = 1e6, .rate_law = DEM_RATE_JC, .jc_C = 0.01 },
+		{ .E = 1e9, .nu = 0.3, .sy0 = 1e6, .rate_law = DEM_RATE_CS, .cs_D = 100 },
+		{ .E = 1e9, .nu = 0.3, .law = DEM_LAW_VOCE, .sy0 = 1e6, .voce_Q = 1e6 },  /* no b */
+		{ .E = 1e9, .nu = 0.3, .law = DEM_LAW_JC, .jc_A = 1e6, .jc_B = 1e6 },     /* no n */
+		{ .E = 1e9, .nu = 0.3, .law = DEM_LAW_JC, .jc_A = 1e6, .jc_n = 0.5, .T = 300,
+		  .T_ref = 293, .T_melt = 280, .mt = 1 },
+		{ .E = 1e9, .nu = 0.3, .sy0 = 1e6, .nkin = 4 },
+		{ .E = 1e9, .nu = 0.3, .sy0 = 1e6, .nkin = 1, .kin_C = { 0 } },
+		{ .E = 1e9, .nu = 0.3, .nkin = 1, .kin_C = { 1e9 } },   /* back-stress, elastic */
 	};
 	for (size_t i = 0; i < COUNT(bad); i++) {
 		dem_error_clear(&e);
@@ -130,7 +141,7 @@ static void test_table71_uniaxial(void **state)
 	assert_true(dem_mat_update_select(&m) == dem_mat_update_j2);
 	double eps[6] = { 0 }, sig[6] = { 0 }, ep = 0;
 	/* first yield */
-	assert_int_equal(dem_mat_uniaxial(&m, hsy[0] / m.E, 0, eps, sig, &ep), DEM_OK);
+	assert_int_equal(dem_mat_uniaxial(&m, hsy[0] / m.E, 0, eps, sig, &ep, NULL), DEM_OK);
 	assert_true(rel(sig[0], hsy[0]) < 1e-12);
 	assert_true(ep == 0);
 	for (int k = 1; k < 8; k++) {
@@ -139,7 +150,7 @@ static void test_table71_uniaxial(void **state)
 		double e0 = eps[0];
 		for (int s = 1; s <= nstep; s++) {
 			double want = e0 + (target - e0) * s / nstep;
-			assert_int_equal(dem_mat_uniaxial(&m, want - eps[0], 0, eps, sig, &ep), DEM_OK);
+			assert_int_equal(dem_mat_uniaxial(&m, want - eps[0], 0, eps, sig, &ep, NULL), DEM_OK);
 			/* consistency on the curve at every step */
 			assert_true(rel(sig[0], dem_mat_flow_stress(&m, ep, 0)) < 1e-12);
 		}
@@ -148,14 +159,14 @@ static void test_table71_uniaxial(void **state)
 	}
 	/* beyond the last point the last slope continues */
 	double slope = (hsy[7] - hsy[6]) / (hep[7] - hep[6]);
-	assert_int_equal(dem_mat_uniaxial(&m, 0.05, 0, eps, sig, &ep), DEM_OK);
+	assert_int_equal(dem_mat_uniaxial(&m, 0.05, 0, eps, sig, &ep, NULL), DEM_OK);
 	assert_true(rel(sig[0], hsy[7] + slope * (ep - hep[7])) < 1e-12);
 	assert_true(rel(eps[0], ep + sig[0] / m.E) < 1e-12);
 
 	/* one large increment from the virgin state across all segments */
 	double eps2[6] = { 0 }, sig2[6] = { 0 }, ep2 = 0;
 	double target = hep[6] + hsy[6] / m.E;
-	assert_int_equal(dem_mat_uniaxial(&m, target, 0, eps2, sig2, &ep2), DEM_OK);
+	assert_int_equal(dem_mat_uniaxial(&m, target, 0, eps2, sig2, &ep2, NULL), DEM_OK);
 	assert_true(rel(sig2[0], hsy[6]) < 1e-11);
 	assert_true(fabs(ep2 - hep[6]) < 1e-12);
 	dem_mat_free(&m);
@@ -171,18 +182,18 @@ static void test_unloading(void **state)
 	make_t71(&m, hep, hsy);
 	double eps[6] = { 0 }, sig[6] = { 0 }, ep = 0;
 	for (int i = 0; i < 40; i++)
-		assert_int_equal(dem_mat_uniaxial(&m, 5e-4, 0, eps, sig, &ep), DEM_OK);
+		assert_int_equal(dem_mat_uniaxial(&m, 5e-4, 0, eps, sig, &ep, NULL), DEM_OK);
 	double s0 = sig[0], e0 = eps[0], ep0 = ep;
 	assert_true(ep0 > 0.01);
 	double de = -1e-3;
-	assert_int_equal(dem_mat_uniaxial(&m, de, 0, eps, sig, &ep), DEM_OK);
+	assert_int_equal(dem_mat_uniaxial(&m, de, 0, eps, sig, &ep, NULL), DEM_OK);
 	assert_true(rel((sig[0] - s0) / (eps[0] - e0), m.E) < 1e-10);
 	assert_true(ep == ep0);
 	/* down to reverse yield at -sigma_y(ep0) */
 	double rev = -dem_mat_flow_stress(&m, ep0, 0);
-	assert_int_equal(dem_mat_uniaxial(&m, (rev - sig[0]) / m.E * (1 - 1e-9), 0, eps, sig, &ep), DEM_OK);
+	assert_int_equal(dem_mat_uniaxial(&m, (rev - sig[0]) / m.E * (1 - 1e-9), 0, eps, sig, &ep, NULL), DEM_OK);
 	assert_true(ep == ep0);
-	assert_int_equal(dem_mat_uniaxial(&m, -1e-3, 0, eps, sig, &ep), DEM_OK);
+	assert_int_equal(dem_mat_uniaxial(&m, -1e-3, 0, eps, sig, &ep, NULL), DEM_OK);
 	assert_true(ep > ep0);
 	assert_true(rel(sig[0], -dem_mat_flow_stress(&m, ep, 0)) < 1e-12);
 	dem_mat_free(&m);
@@ -210,7 +221,7 @@ static void test_linear_hardening(void **state)
 		double ey = sy / E;
 		for (int i = 1; i <= 400; i++) {
 			double ep0 = ep;
-			assert_int_equal(dem_mat_uniaxial(&m, 10 * ey / 400, 0, eps, sig, &ep), DEM_OK);
+			assert_int_equal(dem_mat_uniaxial(&m, 10 * ey / 400, 0, eps, sig, &ep, NULL), DEM_OK);
 			double want = eps[0] <= ey ? E * eps[0] : sy + E * H / (E + H) * (eps[0] - ey);
 			assert_true(rel(sig[0], want) < 1e-11);
 			W += (ep - ep0) * sig[0];   /* dep sigma_f, as the update counts it */
@@ -235,7 +246,7 @@ static void test_plastic_work(void **state)
 	int n = 4000;
 	for (int i = 0; i < n; i++) {
 		double d[6] = { 0, 0, 0, 4e-2 / n, 0, 0 };
-		dem_mat_update(&m, d, 0, sig, &ep, &wp);
+		dem_mat_update(&m, d, 0, sig, &ep, NULL, &wp);
 		W += wp;
 	}
 	assert_true(ep > 0.01);
@@ -246,7 +257,7 @@ static void test_plastic_work(void **state)
 }
 
 /* Rate dependence, sigma_f = sigma_y(ep) max(rate/rate_ref, 1)^m with the
- * effective plastic strain rate, rate_ref = 1/s (material.c).  In steady
+ * effective plastic strain rate, rate_ref = 1/s here (material.c).  In steady
  * uniaxial flow of a perfectly plastic material the plastic rate equals the
  * imposed rate, so the flow stress is sy (rate)^m; with hardening the law
  * holds at every step with the rate dep/dt of that step. */
@@ -263,7 +274,7 @@ static void test_rate(void **state)
 		double eps[6] = { 0 }, sig[6] = { 0 }, ep = 0;
 		double de = 2e-4, dt = de / rates[r];
 		for (int i = 0; i < 200; i++)
-			assert_int_equal(dem_mat_uniaxial(&m, de, dt, eps, sig, &ep), DEM_OK);
+			assert_int_equal(dem_mat_uniaxial(&m, de, dt, eps, sig, &ep, NULL), DEM_OK);
 		double want = sy * fmax(pow(rates[r], m_al), 1);
 		assert_true(rel(sig[0], want) < 1e-10);
 	}
@@ -276,14 +287,14 @@ static void test_rate(void **state)
 		hsy[k] = t71_sy[k] * MPA;
 	}
 	dem_mat_param_t p = { .E = 2.1e5 * MPA, .nu = 0.3, .nhard = 8, .hard_ep = hep, .hard_sy = hsy,
-			      .rate_m = 0.0303, .rate_ref = 10 };
+			      .rate_law = DEM_RATE_POWER, .rate_m = 0.0303, .rate_ref = 10 };
 	dem_error_t e = { 0 };
 	assert_int_equal(dem_mat_init(&m, &p, &e), DEM_OK);
 	double eps[6] = { 0 }, sig[6] = { 0 }, ep = 0;
 	int nplastic = 0;
 	for (int i = 0; i < 300; i++) {
 		double ep0 = ep, dt = 1e-7;
-		assert_int_equal(dem_mat_uniaxial(&m, 5e-4, dt, eps, sig, &ep), DEM_OK);
+		assert_int_equal(dem_mat_uniaxial(&m, 5e-4, dt, eps, sig, &ep, NULL), DEM_OK);
 		if (ep > ep0) {
 			double rate = (ep - ep0) / dt;
 			double want = dem_mat_flow_stress(&m, ep, 0) * pow(fmax(rate / 10, 1), 0.0303);
@@ -308,8 +319,8 @@ static void test_absent_equals_zero(void **state)
 	make_linear(&b, 200 * GPA, 0.3, 300 * MPA, 1 * GPA, 0.02);
 	double d[6] = { 3e-3, -1e-3, -1e-3, 2e-3, 1e-3, -5e-4 };
 	double sa[6] = { 0 }, sb[6] = { 0 }, ea = 0, eb = 0, wa, wb;
-	assert_int_equal(dem_mat_update(&a, d, 1e-6, sa, &ea, &wa), 1);
-	assert_int_equal(dem_mat_update(&b, d, 0, sb, &eb, &wb), 1);
+	assert_int_equal(dem_mat_update(&a, d, 1e-6, sa, &ea, NULL, &wa), 1);
+	assert_int_equal(dem_mat_update(&b, d, 0, sb, &eb, NULL, &wb), 1);
 	assert_memory_equal(sa, sb, sizeof sa);
 	assert_true(ea == eb && wa == wb);
 	dem_mat_free(&a);
@@ -328,8 +339,8 @@ static void fd_tangent(const dem_mat_t *m, const double s0[6], double ep0,
 		memcpy(dm, d0, sizeof dm);
 		dp[j] += h;
 		dm[j] -= h;
-		dem_mat_update(m, dp, dt, sp, &e1, &w);
-		dem_mat_update(m, dm, dt, sm, &e2, &w);
+		dem_mat_update(m, dp, dt, sp, &e1, NULL, &w);
+		dem_mat_update(m, dm, dt, sm, &e2, NULL, &w);
 		for (int i = 0; i < 6; i++)
 			Dfd[6 * i + j] = (sp[i] - sm[i]) / (2 * h);
 	}
@@ -340,11 +351,11 @@ static double tangent_error(const dem_mat_t *m, const double s0[6], double ep0,
 {
 	double s[6], ep = ep0, w, D[36], Dfd[36];
 	memcpy(s, s0, sizeof s);
-	*plastic = dem_mat_update_tangent(m, d0, dt, s, &ep, &w, D);
+	*plastic = dem_mat_update_tangent(m, d0, dt, s, &ep, NULL, &w, D);
 	/* the update with the tangent agrees with the plain update */
 	double s2[6], ep2 = ep0;
 	memcpy(s2, s0, sizeof s2);
-	dem_mat_update(m, d0, dt, s2, &ep2, &w);
+	dem_mat_update(m, d0, dt, s2, &ep2, NULL, &w);
 	for (int i = 0; i < 6; i++)
 		assert_true(fabs(s[i] - s2[i]) <= 1e-12 * dem_mat_mises(s2) + 1e-6);
 	fd_tangent(m, s0, ep0, d0, dt, 1e-9, Dfd);
@@ -439,7 +450,7 @@ static void test_batch_update(void **state)
 					w[c][l] = (l - 1.5) * 1e3 * (c + 1);
 			}
 			int spin = step % 3 != 0;
-			unsigned mask = dem_mat_update_batch(m, dt, d[0], spin ? w[0] : NULL, sig[0], ep, wp);
+			unsigned mask = dem_mat_update_batch(m, dt, d[0], spin ? w[0] : NULL, sig[0], ep, NULL, wp);
 			for (int l = 0; l < NB; l++) {
 				double dd[6], ww[3] = { w[0][l], w[1][l], w[2][l] }, wps;
 				double ep0 = es[l];
@@ -447,7 +458,7 @@ static void test_batch_update(void **state)
 					dd[c] = d[c][l] * dt;
 				if (spin)
 					dem_mat_jaumann(ss[l], ww, dt);
-				int pl = dem_mat_update(m, dd, dt, ss[l], &es[l], &wps);
+				int pl = dem_mat_update(m, dd, dt, ss[l], &es[l], NULL, &wps);
 				assert_int_equal(pl, (int)(mask >> l & 1));
 				for (int c = 0; c < 6; c++)
 					assert_true(memcmp(&sig[c][l], &ss[l][c], sizeof(double)) == 0);

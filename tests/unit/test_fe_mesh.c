@@ -227,7 +227,7 @@ static void test_material_scene(void **state)
 	/* rate dependence (Table 7.2, Al 5052) */
 	s = scene("material:\n  E: 69.3 GPa\n  nu: 0.31\n  rho: 2680 kg/m^3\n"
 		  "  yield: 148 MPa\n  hardening: 194 GPa\n"
-		  "  rate_exponent: 0.0455\n");
+		  "  rate: {law: power, m: 0.0455, ref: 1 1/s}\n");
 	assert_int_equal(dem_scene_material(s, 1, &m, &e), DEM_OK);
 	assert_int_equal(m.flags, DEM_MAT_PLASTIC | DEM_MAT_RATE);
 	assert_true(fabs(dem_mat_flow_stress(&m, 0, 1e4) / 148e6
@@ -253,6 +253,75 @@ static void test_material_scene(void **state)
 	assert_non_null(strstr(e.msg, ":3:"));
 	dem_scene_free(s);
 	dem_error_clear(&e);
+}
+
+/* The hardening laws as a scene names them: each law's keys reach the
+ * material (checked through its flow stress against the law's closed
+ * form), and a law that is unknown, a key it needs that is missing, a
+ * block of another law, or the old rate keys are refused with the
+ * position of the fault. */
+static void test_material_laws_scene(void **state)
+{
+	dem_scene_t *s;
+	dem_mat_t m;
+	dem_error_t e = { 0 };
+	(void)state;
+	/* Johnson-Cook with its thermal factor, in kelvin, and its rate law */
+	s = scene("material:\n  E: 73 GPa\n  nu: 0.33\n  rho: 2780 kg/m^3\n"
+		  "  johnson-cook: {A: 369 MPa, B: 684 MPa, n: 0.73, T: 400 K,\n"
+		  "                 T_ref: 293 K, T_melt: 775 K, m: 1.7}\n"
+		  "  rate: {law: johnson-cook, C: 0.0083, ref: 1 1/s}\n");
+	assert_int_equal(dem_scene_material(s, 1, &m, &e), DEM_OK);
+	assert_int_equal(m.law, DEM_LAW_JC);
+	double th = 1 - pow((400.0 - 293) / (775 - 293), 1.7);
+	double want = (369e6 + 684e6 * pow(0.1, 0.73)) * th * (1 + 0.0083 * log(1e3));
+	assert_true(fabs(dem_mat_flow_stress(&m, 0.1, 1e3) / want - 1) < 1e-12);
+	dem_mat_free(&m);
+	dem_scene_free(s);
+	/* Voce with two back-stresses and Cowper-Symonds */
+	s = scene("material:\n  E: 72 GPa\n  nu: 0.33\n  rho: 2830 kg/m^3\n"
+		  "  law: voce\n  yield: 400 MPa\n  hardening: 50 MPa\n"
+		  "  voce: {Q: 100 MPa, b: 20}\n"
+		  "  kinematic: {C: [40 GPa, 2 GPa], gamma: [400, 10]}\n"
+		  "  rate: {law: cowper-symonds, D: 6500 1/s, p: 4}\n");
+	assert_int_equal(dem_scene_material(s, 1, &m, &e), DEM_OK);
+	assert_int_equal(m.flags, DEM_MAT_PLASTIC | DEM_MAT_RATE | DEM_MAT_KIN | DEM_MAT_GENERAL);
+	assert_int_equal(dem_mat_nhist(&m), 12);
+	want = (400e6 + 100e6 * (1 - exp(-2.0)) + 50e6 * 0.1) * (1 + pow(1e4 / 6500, 0.25));
+	assert_true(fabs(dem_mat_flow_stress(&m, 0.1, 1e4) / want - 1) < 1e-12);
+	dem_mat_free(&m);
+	dem_scene_free(s);
+	/* refusals, each with file:line:col and what was expected */
+	static const struct {
+		const char *body, *where, *what;
+	} bad[] = {
+		{ "  law: vocee\n  yield: 1 MPa\n", ":4:8:", "voce" },
+		{ "  law: voce\n  yield: 1 MPa\n  voce: {Q: 1 MPa}\n", ":6:", "missing b" },
+		{ "  johnson-cook: {A: 1 MPa, B: 1 MPa}\n", ":4:", "missing n" },
+		{ "  yield: 1 MPa\n  voce: {Q: 1 MPa, b: 2}\n  law: linear\n", ":5:", "law is linear" },
+		{ "  yield: 1 MPa\n  rate: {m: 0.05, ref: 1 1/s}\n", ":5:", "rate law" },
+		{ "  yield: 1 MPa\n  rate: {law: power, m: 0.05}\n", ":5:", "missing ref" },
+		{ "  yield: 1 MPa\n  rate: {law: wrong}\n", ":5:", "cowper-symonds" },
+		{ "  yield: 1 MPa\n  rate_exponent: 0.05\n", ":5:", "rate: {law: power" },
+		{ "  yield: 1 MPa\n  kinematic: {C: [1 GPa, 2 GPa], gamma: [1]}\n", ":5:", "one per modulus" },
+		{ "  kinematic: {C: [1 GPa], gamma: [1]}\n", ":4:", "need a yield" },
+		{ "  johnson-cook: {A: 1 MPa, B: 1 MPa, n: 0.5, T: 300 K}\n", ":4:", "T_ref" },
+		{ "  johnson-cook: {A: 1 MPa, B: 1 MPa, n: 0.5, T: 300 m, T_ref: 293 K, T_melt: 800 K, m: 1}\n",
+		  ":4:", "temperature" },
+	};
+	for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+		char text[512];
+		snprintf(text, sizeof text, "material:\n  E: 210 GPa\n  nu: 0.3\n%s", bad[i].body);
+		s = scene(text);
+		dem_error_clear(&e);
+		assert_int_equal(dem_scene_material(s, 0, &m, &e), DEM_EINPUT);
+		if (!strstr(e.msg, bad[i].where) || !strstr(e.msg, bad[i].what))
+			fprintf(stderr, "# case %zu: %s\n", i, e.msg);
+		assert_non_null(strstr(e.msg, bad[i].where));
+		assert_non_null(strstr(e.msg, bad[i].what));
+		dem_mat_free(&m);
+		dem_scene_free(s);
+	}
 }
 
 
@@ -313,6 +382,7 @@ int main(void)
 		cmocka_unit_test(test_axis_errors),
 		cmocka_unit_test(test_mesh_box),
 		cmocka_unit_test(test_material_scene),
+		cmocka_unit_test(test_material_laws_scene),
 		cmocka_unit_test(test_block_scene),
 	};
 
