@@ -10,6 +10,10 @@
  * result is read by one strtod, so "0.7 mm" gives exactly the double nearest
  * to 0.0007, the same double as "0.0007".  Only degrees carry a factor that is
  * not a power of ten.
+ *
+ * Temperatures are absolute, in kelvin: a unit here is a factor, and degC
+ * (or degF) would need an offset, which "5 degC/s" or "Pa/degC" could not
+ * apply consistently.  They are refused with a hint, not misread.
  */
 #include "core/units.h"
 
@@ -43,6 +47,12 @@ static const struct base_unit base_units[] = {
 	{ "Pa",  DEM_DIM_PRESSURE, 0,  0, 1 },
 	{ "rad", DEM_DIM_ANGLE,    0,  0, 1 },
 	{ "deg", DEM_DIM_ANGLE,    0,  1, 0 },
+	{ "K",   DEM_DIM_TEMPERATURE, 0, 0, 1 },
+};
+
+/* Offset scales of temperature, known only to be refused. */
+static const char *const offset_scales[] = {
+	"degC", "degF", "\xc2\xb0""C", "\xc2\xb0""F", "C", "F",
 };
 
 struct prefix {
@@ -79,18 +89,23 @@ static const struct dim_name dim_names[] = {
 	{ DEM_DIM_PRESSURE, "Pa", "pressure", "pressures", "72 GPa" },
 	{ DEM_DIM_DENSITY, "kg/m^3", "density", "densities", "7800 kg/m^3" },
 	{ DEM_DIM_RATE, "1/s", "rate", "rates", "100 1/s" },
-	{ { 2, 0, 0, 0 }, "m^2", "area", "areas", "1 mm^2" },
-	{ { 3, 0, 0, 0 }, "m^3", "volume", "volumes", "1 mm^3" },
-	{ { 0, 1, -2, 0 }, "N/m", "stiffness", "stiffnesses", "1e6 N/m" },
-	{ { 0, 0, -1, 1 }, "rad/s", "angular velocity", "angular velocities",
+	{ DEM_DIM_TEMPERATURE, "K", "temperature", "temperatures", "293 K" },
+	{ { 2, 0, 0, 0, 0 }, "m^2", "area", "areas", "1 mm^2" },
+	{ { 3, 0, 0, 0, 0 }, "m^3", "volume", "volumes", "1 mm^3" },
+	{ { 0, 1, -2, 0, 0 }, "N/m", "stiffness", "stiffnesses", "1e6 N/m" },
+	{ { 0, 0, -1, 1, 0 }, "rad/s", "angular velocity", "angular velocities",
 	  "10 rad/s" },
 };
 
 #define COUNT(a) (sizeof(a) / sizeof((a)[0]))
 
+/* The exponents of dem_dim_t: L, M, T, A, Th. */
+#define NDIM 5
+
 int dem_dim_equal(dem_dim_t a, dem_dim_t b)
 {
-	return a.L == b.L && a.M == b.M && a.T == b.T && a.A == b.A;
+	return a.L == b.L && a.M == b.M && a.T == b.T && a.A == b.A &&
+	       a.Th == b.Th;
 }
 
 static const struct dim_name *find_dim_name(dem_dim_t d)
@@ -115,13 +130,13 @@ const char *dem_dim_si_name(dem_dim_t d)
 /* The generic SI form in the order of the struct: "m^-1 kg s^-1". */
 static void format_generic(dem_dim_t d, char *buf, size_t len)
 {
-	static const char *const sym[4] = { "m", "kg", "s", "rad" };
-	int exp[4] = { d.L, d.M, d.T, d.A };
+	static const char *const sym[NDIM] = { "m", "kg", "s", "rad", "K" };
+	int exp[NDIM] = { d.L, d.M, d.T, d.A, d.Th };
 	size_t used = 0;
 	int i, k;
 
 	buf[0] = '\0';
-	for (i = 0; i < 4; i++) {
+	for (i = 0; i < NDIM; i++) {
 		if (exp[i] == 0 || used >= len)
 			continue;
 		if (exp[i] == 1)
@@ -189,7 +204,7 @@ const char *dem_dim_example(dem_dim_t d, char *buf, size_t len)
 
 /* What has been read of the unit expression so far. */
 struct unit_acc {
-	int dim[4];
+	int dim[NDIM];
 	long exp10;
 	int degrees;
 };
@@ -240,6 +255,17 @@ static const struct base_unit *find_unit(const char *name, size_t n,
 	return NULL;
 }
 
+static int is_offset_scale(const char *name, size_t n)
+{
+	size_t i;
+
+	for (i = 0; i < COUNT(offset_scales); i++)
+		if (strlen(offset_scales[i]) == n &&
+		    memcmp(offset_scales[i], name, n) == 0)
+			return 1;
+	return 0;
+}
+
 /* Read "^N" after a unit name: a signed integer of one or two digits. */
 static int read_exponent(const char **pp, int *exp)
 {
@@ -285,7 +311,9 @@ static int read_factor(const char **pp, int op, struct unit_acc *acc,
 	}
 	b = find_unit(name, n, &pexp10);
 	if (!b) {
-		snprintf(why, whylen, "unknown unit '%.*s'", (int)n, name);
+		snprintf(why, whylen, "unknown unit '%.*s'%s", (int)n, name,
+			 is_offset_scale(name, n) ? " (temperatures are "
+			 "absolute, in kelvin: '293 K')" : "");
 		return -1;
 	}
 	if (read_exponent(&p, &exp) < 0) {
@@ -298,6 +326,7 @@ static int read_factor(const char **pp, int op, struct unit_acc *acc,
 	acc->dim[1] += exp * b->dim.M;
 	acc->dim[2] += exp * b->dim.T;
 	acc->dim[3] += exp * b->dim.A;
+	acc->dim[4] += exp * b->dim.Th;
 	acc->exp10 += (long)exp * (pexp10 + b->exp10);
 	acc->degrees += exp * b->degrees;
 	*pp = p;
@@ -308,7 +337,7 @@ static int dims_sane(const struct unit_acc *acc)
 {
 	int i;
 
-	for (i = 0; i < 4; i++)
+	for (i = 0; i < NDIM; i++)
 		if (acc->dim[i] > MAX_DIM_EXP || acc->dim[i] < -MAX_DIM_EXP)
 			return 0;
 	return acc->exp10 <= MAX_EXP10 && acc->exp10 >= -MAX_EXP10 &&
@@ -461,7 +490,7 @@ static void dim_mismatch(const char *unit, dem_dim_t got, dem_dim_t want,
 int dem_units_parse(const char *text, dem_dim_t want, double *si,
 		    char *why, size_t whylen)
 {
-	struct unit_acc acc = { { 0, 0, 0, 0 }, 0, 0 };
+	struct unit_acc acc = { { 0, 0, 0, 0, 0 }, 0, 0 };
 	struct number num;
 	const char *p = skip_space(text), *unit;
 	char unitbuf[128];
@@ -490,7 +519,8 @@ int dem_units_parse(const char *text, dem_dim_t want, double *si,
 		got = (dem_dim_t){ (signed char)acc.dim[0],
 				   (signed char)acc.dim[1],
 				   (signed char)acc.dim[2],
-				   (signed char)acc.dim[3] };
+				   (signed char)acc.dim[3],
+				   (signed char)acc.dim[4] };
 		if (!dem_dim_equal(got, want)) {
 			/* name the unit as written, without trailing space */
 			n = strlen(unit);

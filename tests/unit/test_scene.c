@@ -333,7 +333,7 @@ static void test_quantity_errors(void **state)
 		       "strip.yaml:3:10: pack.radius.min: expected a length "
 		       "(e.g. '0.7 mm'), got '0.7 mm;' (trailing garbage ';')");
 	quantity_fails("material:\n  visc: 1 Pa\n", "material.visc",
-		       (dem_dim_t){ -1, 1, -1, 0 }, 0, HUGE_VAL,
+		       (dem_dim_t){ -1, 1, -1, 0, 0 }, 0, HUGE_VAL,
 		       "strip.yaml:2:9: material.visc: unit 'Pa' is a pressure, "
 		       "expected a quantity in m^-1 kg s^-1 (e.g. "
 		       "'1 m^-1 kg s^-1')");
@@ -934,7 +934,7 @@ static void read_values(dem_scene_t *s, struct values *v, double def)
 					  zero, -HUGE_VAL, HUGE_VAL, v->grav,
 					  &e), 0);
 	assert_int_equal(dem_scene_quantity(s, "material.visc",
-					    (dem_dim_t){ -1, 1, -1, 0 }, def,
+					    (dem_dim_t){ -1, 1, -1, 0, 0 }, def,
 					    0, HUGE_VAL, &v->odd, &e), 0);
 	assert_int_equal(dem_scene_string(s, "meta.title", "", &v->title, &e),
 			 0);

@@ -22,8 +22,11 @@
 
 #define COUNT(a) (sizeof(a) / sizeof((a)[0]))
 
-static const dem_dim_t AREA = { 2, 0, 0, 0 };
-static const dem_dim_t VOLUME = { 3, 0, 0, 0 };
+static const dem_dim_t AREA = { 2, 0, 0, 0, 0 };
+static const dem_dim_t VOLUME = { 3, 0, 0, 0, 0 };
+static const dem_dim_t PA_PER_K = { -1, 1, -2, 0, -1 };
+static const dem_dim_t PER_K = { 0, 0, 0, 0, -1 };
+static const dem_dim_t K_PER_S = { 0, 0, -1, 0, 1 };
 
 struct accept {
 	const char *text;
@@ -106,6 +109,16 @@ static const struct accept accepted[] = {
 	{ "30 deg", DEM_DIM_ANGLE, 30 * DEG },
 	{ "180 deg", DEM_DIM_ANGLE, 180 * DEG },
 	{ "-45 deg", DEM_DIM_ANGLE, -45 * DEG },
+	/* temperatures, in kelvin; prefixes apply as to any SI unit */
+	{ "293 K", DEM_DIM_TEMPERATURE, 293 },
+	{ "293", DEM_DIM_TEMPERATURE, 293 },
+	{ "1.5 kK", DEM_DIM_TEMPERATURE, 1500 },
+	{ "20 mK", DEM_DIM_TEMPERATURE, 0.02 },
+	{ "1775K", DEM_DIM_TEMPERATURE, 1775 },
+	/* a temperature inside a compound unit */
+	{ "2 MPa/K", PA_PER_K, 2e6 },
+	{ "1e-5 1/K", PER_K, 1e-5 },
+	{ "10 K/s", K_PER_S, 10 },
 	/* a dimensionless ratio written with cancelling units */
 	{ "5 mm/m", DEM_DIM_NONE, 0.005 },
 	/* underflow is a (tiny) finite value, not an error */
@@ -150,10 +163,17 @@ static const struct reject rejected[] = {
 	{ "30 deg", DEM_DIM_NONE, "unit 'deg' is an angle, expected a number" },
 	{ "3 kg", DEM_DIM_FORCE, "unit 'kg' is a mass, expected a force" },
 	{ "3 m", DEM_DIM_RATE, "unit 'm' is a length, expected a rate" },
+	{ "293 m", DEM_DIM_TEMPERATURE,
+	  "unit 'm' is a length, expected a temperature" },
+	{ "293 K", DEM_DIM_NONE,
+	  "unit 'K' is a temperature, expected a number" },
+	{ "293 K", DEM_DIM_TIME, "unit 'K' is a temperature, expected a time" },
+	{ "2 MPa", PA_PER_K,
+	  "unit 'MPa' is a pressure, expected a quantity in m^-1 kg s^-2 K^-1" },
 	/* wrong dimension without a name: the SI form */
 	{ "1 m^-1 s^-1", DEM_DIM_NONE,
 	  "unit 'm^-1 s^-1' is a quantity in m^-1 s^-1, expected a number" },
-	{ "1 m", (dem_dim_t){ 1, 2, 0, 0 },
+	{ "1 m", (dem_dim_t){ 1, 2, 0, 0, 0 },
 	  "unit 'm' is a length, expected a quantity in m kg^2" },
 	/* unknown units, named */
 	{ "5 mmm", DEM_DIM_LENGTH, "unknown unit 'mmm'" },
@@ -167,6 +187,17 @@ static const struct reject rejected[] = {
 	{ "5 in", DEM_DIM_LENGTH, "unknown unit 'in'" },
 	{ "5 kg/mx^3", DEM_DIM_DENSITY, "unknown unit 'mx'" },
 	{ "0x10", DEM_DIM_NONE, "unknown unit 'x'" },
+	{ "5 k", DEM_DIM_TEMPERATURE, "unknown unit 'k'" },
+	{ "5 Kelvin", DEM_DIM_TEMPERATURE, "unknown unit 'Kelvin'" },
+	/* offset scales are refused, with the kelvin hint */
+	{ "20 degC", DEM_DIM_TEMPERATURE, "unknown unit 'degC' (temperatures "
+	  "are absolute, in kelvin: '293 K')" },
+	{ "20 \xc2\xb0" "C", DEM_DIM_TEMPERATURE, "unknown unit '\xc2\xb0" "C' "
+	  "(temperatures are absolute" },
+	{ "68 degF", DEM_DIM_TEMPERATURE, "unknown unit 'degF' (temperatures" },
+	{ "20 C", DEM_DIM_TEMPERATURE, "unknown unit 'C' (temperatures" },
+	{ "20 deg C", DEM_DIM_TEMPERATURE, "unknown unit 'C' (temperatures" },
+	{ "5 kdegC", DEM_DIM_TEMPERATURE, "unknown unit 'kdegC'" },
 	/* not a number */
 	{ "", DEM_DIM_NONE, "not a number" },
 	{ "   ", DEM_DIM_NONE, "not a number" },
@@ -272,10 +303,12 @@ static void test_si_names(void **state)
 	assert_string_equal(dem_dim_si_name(DEM_DIM_DENSITY), "kg/m^3");
 	assert_string_equal(dem_dim_si_name(DEM_DIM_RATE), "1/s");
 	assert_string_equal(dem_dim_si_name(AREA), "m^2");
-	assert_string_equal(dem_dim_si_name((dem_dim_t){ -1, 0, -1, 0 }), "?");
+	assert_string_equal(dem_dim_si_name(DEM_DIM_TEMPERATURE), "K");
+	assert_string_equal(dem_dim_si_name(PA_PER_K), "?");
+	assert_string_equal(dem_dim_si_name((dem_dim_t){ -1, 0, -1, 0, 0 }), "?");
 }
 
-/* dem_dim_format writes the name, or the generic form in L, M, T, A
+/* dem_dim_format writes the name, or the generic form in L, M, T, A, Th
  * order; every form it writes parses back to its own dimension. */
 static void test_format_round_trip(void **state)
 {
@@ -283,21 +316,29 @@ static void test_format_round_trip(void **state)
 		DEM_DIM_LENGTH, DEM_DIM_MASS, DEM_DIM_TIME, DEM_DIM_ANGLE,
 		DEM_DIM_VELOCITY, DEM_DIM_ACCEL, DEM_DIM_FORCE,
 		DEM_DIM_PRESSURE, DEM_DIM_DENSITY, DEM_DIM_RATE,
-		{ 2, 0, 0, 0 }, { 3, 0, 0, 0 }, { 0, 1, -2, 0 },
-		{ 0, 0, -1, 1 }, { -1, 0, -1, 0 }, { 2, 1, -2, 0 },
-		{ -1, 1, -1, 0 }, { 0, 0, 0, 2 }, { 1, 0, 0, -1 },
+		{ 2, 0, 0, 0, 0 }, { 3, 0, 0, 0, 0 }, { 0, 1, -2, 0, 0 },
+		{ 0, 0, -1, 1, 0 }, { -1, 0, -1, 0, 0 }, { 2, 1, -2, 0, 0 },
+		{ -1, 1, -1, 0, 0 }, { 0, 0, 0, 2, 0 }, { 1, 0, 0, -1, 0 },
+		DEM_DIM_TEMPERATURE, { -1, 1, -2, 0, -1 }, { 0, 0, 0, 0, -1 },
+		{ 0, 0, -1, 0, 1 }, { 0, 0, 0, 0, 2 }, { 0, 0, 0, 1, -1 },
 	};
 	char unit[64], text[100], why[256];
 	size_t i;
 	double v;
 
 	(void)state;
-	assert_string_equal(dem_dim_format((dem_dim_t){ -1, 0, -1, 0 }, unit,
+	assert_string_equal(dem_dim_format((dem_dim_t){ -1, 0, -1, 0, 0 }, unit,
 					   sizeof unit), "m^-1 s^-1");
-	assert_string_equal(dem_dim_format((dem_dim_t){ 2, 1, -2, 0 }, unit,
+	assert_string_equal(dem_dim_format((dem_dim_t){ 2, 1, -2, 0, 0 }, unit,
 					   sizeof unit), "m^2 kg s^-2");
 	assert_string_equal(dem_dim_format(DEM_DIM_DENSITY, unit, sizeof unit),
 			    "kg/m^3");
+	assert_string_equal(dem_dim_format(DEM_DIM_TEMPERATURE, unit,
+					   sizeof unit), "K");
+	assert_string_equal(dem_dim_format(PA_PER_K, unit, sizeof unit),
+			    "m^-1 kg s^-2 K^-1");
+	assert_string_equal(dem_dim_format((dem_dim_t){ 0, 0, 0, 1, -1 }, unit,
+					   sizeof unit), "rad K^-1");
 	for (i = 0; i < COUNT(dims); i++) {
 		dem_dim_format(dims[i], unit, sizeof unit);
 		snprintf(text, sizeof text, "0.0007 %s", unit);
@@ -321,21 +362,31 @@ static void test_describe(void **state)
 			    "a number");
 	assert_string_equal(dem_dim_describe(DEM_DIM_VELOCITY, 1, buf,
 					     sizeof buf), "velocities");
-	assert_string_equal(dem_dim_describe((dem_dim_t){ -1, 0, -1, 0 }, 0,
+	assert_string_equal(dem_dim_describe((dem_dim_t){ -1, 0, -1, 0, 0 }, 0,
 					     buf, sizeof buf),
 			    "a quantity in m^-1 s^-1");
 	assert_string_equal(dem_dim_example(DEM_DIM_VELOCITY, buf, sizeof buf),
 			    "46.5 m/s");
+	assert_string_equal(dem_dim_describe(DEM_DIM_TEMPERATURE, 0, buf,
+					     sizeof buf), "a temperature");
+	assert_string_equal(dem_dim_describe(DEM_DIM_TEMPERATURE, 1, buf,
+					     sizeof buf), "temperatures");
+	assert_string_equal(dem_dim_example(DEM_DIM_TEMPERATURE, buf,
+					    sizeof buf), "293 K");
 }
 
-/* dem_dim_equal compares all four exponents. */
+/* dem_dim_equal compares all five exponents. */
 static void test_dim_equal(void **state)
 {
 	(void)state;
-	assert_true(dem_dim_equal(DEM_DIM_FORCE, (dem_dim_t){ 1, 1, -2, 0 }));
+	assert_true(dem_dim_equal(DEM_DIM_FORCE, (dem_dim_t){ 1, 1, -2, 0, 0 }));
 	assert_false(dem_dim_equal(DEM_DIM_LENGTH, DEM_DIM_ANGLE));
 	assert_false(dem_dim_equal(DEM_DIM_NONE, DEM_DIM_ANGLE));
 	assert_false(dem_dim_equal(DEM_DIM_PRESSURE, DEM_DIM_FORCE));
+	assert_false(dem_dim_equal(DEM_DIM_NONE, DEM_DIM_TEMPERATURE));
+	assert_false(dem_dim_equal(DEM_DIM_PRESSURE, PA_PER_K));
+	assert_true(dem_dim_equal(DEM_DIM_TEMPERATURE,
+				  (dem_dim_t){ 0, 0, 0, 0, 1 }));
 }
 
 int main(void)
