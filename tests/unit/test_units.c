@@ -22,11 +22,13 @@
 
 #define COUNT(a) (sizeof(a) / sizeof((a)[0]))
 
-static const dem_dim_t AREA = { 2, 0, 0, 0, 0 };
-static const dem_dim_t VOLUME = { 3, 0, 0, 0, 0 };
-static const dem_dim_t PA_PER_K = { -1, 1, -2, 0, -1 };
-static const dem_dim_t PER_K = { 0, 0, 0, 0, -1 };
-static const dem_dim_t K_PER_S = { 0, 0, -1, 0, 1 };
+/* Macros like the header's, not const objects: a const object is not a
+ * constant expression in C, and clang refuses it in the tables below. */
+#define AREA ((dem_dim_t){ 2, 0, 0, 0, 0 })
+#define VOLUME ((dem_dim_t){ 3, 0, 0, 0, 0 })
+#define PA_PER_K ((dem_dim_t){ -1, 1, -2, 0, -1 })
+#define PER_K ((dem_dim_t){ 0, 0, 0, 0, -1 })
+#define K_PER_S ((dem_dim_t){ 0, 0, -1, 0, 1 })
 
 struct accept {
 	const char *text;
