@@ -8,6 +8,8 @@
 
 VERSION  := 0.1.0
 CC       ?= cc
+# where an installed toolkit finds its share/ (material and shot libraries)
+DATADIR  ?= /usr/local/share/dem
 PKGS     := gsl yaml-0.1 zlib
 
 ifeq ($(SANITIZE),1)
@@ -19,7 +21,8 @@ OPT      := -O2 -g
 endif
 
 CFLAGS   := -std=c11 -Wall -Wextra -Werror $(OPT) -D_POSIX_C_SOURCE=200809L \
-            -DDEM_VERSION='"$(VERSION)"' -Ilib -fopenmp \
+            -DDEM_VERSION='"$(VERSION)"' -DDEM_DATADIR='"$(DATADIR)"' \
+            -Ilib -fopenmp \
             $(shell pkg-config --cflags $(PKGS) 2>/dev/null) -I/usr/include/suitesparse
 # CHOLMOD (SuiteSparse) has no pkg-config file on Debian 12
 LDLIBS   := $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lcholmod -lm

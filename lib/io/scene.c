@@ -8,12 +8,19 @@
  *
  * The getters record each key they were asked for, in order, with the value
  * they resolved; that list drives both --dump-scene and dem_scene_check().
+ *
+ * A section may pull in a library file of the data directory ("material:
+ * {use: al7075}"): its tree is merged into the section's when the scene is
+ * loaded, the scene's own keys winning, so the getters never know.  Nodes
+ * that came from a library keep its name for messages; the scene owns the
+ * names (files), the nodes only point at them.
  */
 #include "io/scene.h"
 
 #include "core/cli.h"
 
 #include "core/fmt.h"
+#include "core/share.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -24,6 +31,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
 #include <yaml.h>
 
 /* Deeper nesting than this is not a scene; the limit keeps the recursive
@@ -56,6 +64,18 @@ static const char *const shared_keys[] = {
 	NULL
 };
 
+/* The sections that may pull in a library file with "use: NAME", and the
+ * folder of the data directory that holds their files. */
+static const struct {
+	const char *section;
+	const char *folder;
+} library_folders[] = {
+	{ "material", "materials" },
+	{ "shot", "shots" },
+};
+
+#define COUNT(a) (sizeof(a) / sizeof((a)[0]))
+
 enum node_kind { NODE_SCALAR, NODE_SEQ, NODE_MAP };
 
 struct node;
@@ -73,6 +93,8 @@ struct node {
 	int plain;              /* a plain scalar, which may be null */
 	long line, col;         /* 1-based; 0 when set on the command line */
 	char *origin;           /* the option that set it, or NULL */
+	const char *file;       /* the library file it came from (owned by the
+				 * scene), or NULL for the scene's own */
 	struct entry *ent;
 	size_t n, cap;
 };
@@ -84,6 +106,12 @@ struct rec {
 	char *val;
 };
 
+/* A section's "use:" as --dump-scene writes it: "al7075  # /x/al7075.yaml". */
+struct use {
+	char *section;
+	char *text;
+};
+
 struct dem_scene {
 	char *name;             /* the file, for messages; NULL if none */
 	struct node *root;      /* always a mapping */
@@ -91,6 +119,10 @@ struct dem_scene {
 	size_t nrec, caprec;
 	char **keep;            /* strings handed out by dem_scene_string */
 	size_t nkeep, capkeep;
+	char **files;           /* library files read, named by their nodes */
+	size_t nfiles, capfiles;
+	struct use *use;
+	size_t nuse, capuse;
 };
 
 /* ---- small helpers ------------------------------------------------------- */
@@ -212,23 +244,26 @@ static struct entry *map_find(const struct node *map, const char *key,
 
 /* ---- messages ------------------------------------------------------------ */
 
-static void where(const dem_scene_t *s, const char *origin, long line,
-		  long col, char *buf, size_t len)
+/* file NULL is the scene's own file. */
+static void where(const dem_scene_t *s, const char *file, const char *origin,
+		  long line, long col, char *buf, size_t len)
 {
 	if (origin)
 		snprintf(buf, len, "command line: %s", origin);
+	else if (file)
+		snprintf(buf, len, "%s:%ld:%ld", file, line, col);
 	else
 		snprintf(buf, len, "%s:%ld:%ld", s->name ? s->name : "scene",
 			 line, col);
 }
 
-static int vfail_at(const dem_scene_t *s, const char *origin, long line,
-		    long col, dem_error_t *e, int code, const char *fmt,
-		    va_list ap)
+static int vfail_at(const dem_scene_t *s, const char *file,
+		    const char *origin, long line, long col, dem_error_t *e,
+		    int code, const char *fmt, va_list ap)
 {
-	char w[256], msg[768];
+	char w[512], msg[768];
 
-	where(s, origin, line, col, w, sizeof w);
+	where(s, file, origin, line, col, w, sizeof w);
 	vsnprintf(msg, sizeof msg, fmt, ap);
 	/* a bad value typed on the command line is a usage error (exit 2) */
 	if (origin && code == DEM_EINPUT)
@@ -236,18 +271,18 @@ static int vfail_at(const dem_scene_t *s, const char *origin, long line,
 	return dem_error_set(e, code, "%s: %s", w, msg);
 }
 
-static int fail_at(const dem_scene_t *s, const char *origin, long line,
-		   long col, dem_error_t *e, const char *fmt, ...)
-	__attribute__((format(printf, 6, 7)));
+static int fail_at(const dem_scene_t *s, const char *file, const char *origin,
+		   long line, long col, dem_error_t *e, const char *fmt, ...)
+	__attribute__((format(printf, 7, 8)));
 
-static int fail_at(const dem_scene_t *s, const char *origin, long line,
-		   long col, dem_error_t *e, const char *fmt, ...)
+static int fail_at(const dem_scene_t *s, const char *file, const char *origin,
+		   long line, long col, dem_error_t *e, const char *fmt, ...)
 {
 	va_list ap;
 	int code;
 
 	va_start(ap, fmt);
-	code = vfail_at(s, origin, line, col, e, DEM_EINPUT, fmt, ap);
+	code = vfail_at(s, file, origin, line, col, e, DEM_EINPUT, fmt, ap);
 	va_end(ap);
 	return code;
 }
@@ -263,7 +298,8 @@ static int fail(const dem_scene_t *s, const struct node *n, dem_error_t *e,
 	int code;
 
 	va_start(ap, fmt);
-	code = vfail_at(s, n->origin, n->line, n->col, e, DEM_EINPUT, fmt, ap);
+	code = vfail_at(s, n->file, n->origin, n->line, n->col, e, DEM_EINPUT,
+			fmt, ap);
 	va_end(ap);
 	return code;
 }
@@ -336,6 +372,7 @@ static int read_all(const char *path, char **buf, size_t *len,
 /* The state of building the tree from libyaml's events. */
 struct builder {
 	dem_scene_t *s;
+	const char *file;       /* a library file, or NULL for the scene */
 	struct node **stack;    /* open mappings and sequences */
 	size_t depth, cap;
 	struct node *root;
@@ -422,6 +459,7 @@ static int builder_open(struct builder *b, enum node_kind kind,
 
 	if (!n)
 		return dem_error_nomem(e, "scene");
+	n->file = b->file;
 	if (b->depth >= MAX_DEPTH) {
 		fail(b->s, n, e, "nested deeper than %d levels", MAX_DEPTH);
 		node_free(n);
@@ -446,6 +484,7 @@ static int builder_scalar(struct builder *b, const yaml_event_t *ev,
 
 	if (!n)
 		return dem_error_nomem(e, "scene");
+	n->file = b->file;
 	n->text = xstrndup((const char *)ev->data.scalar.value,
 			   ev->data.scalar.length);
 	if (!n->text) {
@@ -464,15 +503,16 @@ static int builder_event(struct builder *b, const yaml_event_t *ev,
 	switch (ev->type) {
 	case YAML_DOCUMENT_START_EVENT:
 		if (++b->docs > 1)
-			return fail_at(b->s, NULL, (long)m->line + 1,
+			return fail_at(b->s, b->file, NULL, (long)m->line + 1,
 				       (long)m->column + 1, e,
-				       "a second document; a scene is one "
-				       "YAML document");
+				       "a second document; %s is one YAML "
+				       "document", b->file ? "a library file" :
+				       "a scene");
 		return DEM_OK;
 	case YAML_ALIAS_EVENT:
 		/* aliases would make one value appear under several keys,
 		 * which the unknown-key check and the dump cannot follow */
-		return fail_at(b->s, NULL, (long)m->line + 1,
+		return fail_at(b->s, b->file, NULL, (long)m->line + 1,
 			       (long)m->column + 1, e,
 			       "aliases (*%s) are not supported",
 			       (const char *)ev->data.alias.anchor);
@@ -506,8 +546,9 @@ static void offset_to_mark(const char *buf, size_t len, size_t off,
 	*col = (long)(off - start) + 1;
 }
 
-static int syntax_error(const dem_scene_t *s, const yaml_parser_t *p,
-			const char *buf, size_t len, dem_error_t *e)
+static int syntax_error(const dem_scene_t *s, const char *file,
+			const yaml_parser_t *p, const char *buf, size_t len,
+			dem_error_t *e)
 {
 	long line, col;
 
@@ -516,24 +557,26 @@ static int syntax_error(const dem_scene_t *s, const yaml_parser_t *p,
 		return dem_error_nomem(e, "scene parser");
 	case YAML_READER_ERROR:
 		offset_to_mark(buf, len, p->problem_offset, &line, &col);
-		return fail_at(s, NULL, line, col, e, "%s", p->problem);
+		return fail_at(s, file, NULL, line, col, e, "%s", p->problem);
 	default:
 		if (p->context)
-			return fail_at(s, NULL, (long)p->problem_mark.line + 1,
+			return fail_at(s, file, NULL,
+				       (long)p->problem_mark.line + 1,
 				       (long)p->problem_mark.column + 1, e,
 				       "%s (%s at line %ld, column %ld)",
 				       p->problem, p->context,
 				       (long)p->context_mark.line + 1,
 				       (long)p->context_mark.column + 1);
-		return fail_at(s, NULL, (long)p->problem_mark.line + 1,
+		return fail_at(s, file, NULL, (long)p->problem_mark.line + 1,
 			       (long)p->problem_mark.column + 1, e, "%s",
 			       p->problem ? p->problem : "syntax error");
 	}
 }
 
-/* The top level must be a mapping of sections; an empty file, or a document
- * holding only null, is an empty scene. */
-static int builder_root(struct builder *b, dem_error_t *e)
+/* The top level must be a mapping (of sections, or of a library's
+ * settings); an empty file, or a document holding only null, is an empty
+ * mapping.  Hands the mapping to *out (NULL when empty). */
+static int builder_root(struct builder *b, struct node **out, dem_error_t *e)
 {
 	struct node *r = b->root;
 	char got[80];
@@ -543,20 +586,25 @@ static int builder_root(struct builder *b, dem_error_t *e)
 		b->root = NULL;
 		return DEM_OK;
 	}
+	if (r->kind != NODE_MAP && b->file)
+		return fail(b->s, r, e, "a library file is a mapping of a "
+			    "section's settings (E:, nu:, ...), got %s",
+			    describe(r, got, sizeof got));
 	if (r->kind != NODE_MAP)
 		return fail(b->s, r, e, "a scene is a mapping of sections "
 			    "(pack:, detect:, ...), got %s",
 			    describe(r, got, sizeof got));
-	node_free(b->s->root);
-	b->s->root = r;
+	*out = r;
 	b->root = NULL;
 	return DEM_OK;
 }
 
-static int parse_text(dem_scene_t *s, const char *buf, size_t len,
-		      dem_error_t *e)
+/* Parse the YAML text of file (NULL: the scene's own) into *out, a mapping
+ * or NULL when empty. */
+static int parse_text(dem_scene_t *s, const char *file, const char *buf,
+		      size_t len, struct node **out, dem_error_t *e)
 {
-	struct builder b = { s, NULL, 0, 0, NULL, 0 };
+	struct builder b = { s, file, NULL, 0, 0, NULL, 0 };
 	yaml_parser_t p;
 	yaml_event_t ev;
 	int code = DEM_OK, done = 0;
@@ -566,7 +614,7 @@ static int parse_text(dem_scene_t *s, const char *buf, size_t len,
 	yaml_parser_set_input_string(&p, (const unsigned char *)buf, len);
 	while (!done && code == DEM_OK) {
 		if (!yaml_parser_parse(&p, &ev)) {
-			code = syntax_error(s, &p, buf, len, e);
+			code = syntax_error(s, file, &p, buf, len, e);
 			break;
 		}
 		done = ev.type == YAML_STREAM_END_EVENT;
@@ -574,16 +622,264 @@ static int parse_text(dem_scene_t *s, const char *buf, size_t len,
 		yaml_event_delete(&ev);
 	}
 	yaml_parser_delete(&p);
+	*out = NULL;
 	if (code == DEM_OK)
-		code = builder_root(&b, e);
+		code = builder_root(&b, out, e);
 	node_free(b.root);
 	free(b.stack);
+	return code;
+}
+
+/* ---- library files (use:) ----------------------------------------------- */
+
+static char *yaml_text(const char *s);
+
+static const char *library_folder(const char *section)
+{
+	size_t i;
+
+	for (i = 0; i < COUNT(library_folders); i++)
+		if (strcmp(library_folders[i].section, section) == 0)
+			return library_folders[i].folder;
+	return NULL;
+}
+
+static const struct use *use_find(const dem_scene_t *s, const char *section,
+				  size_t len)
+{
+	size_t i;
+
+	for (i = 0; i < s->nuse; i++)
+		if (strlen(s->use[i].section) == len &&
+		    memcmp(s->use[i].section, section, len) == 0)
+			return &s->use[i];
+	return NULL;
+}
+
+/* Keep the name of a library file for the life of the scene: its nodes
+ * point at it. */
+static const char *keep_file(dem_scene_t *s, const char *path)
+{
+	char *c;
+
+	if (grow((void **)&s->files, &s->capfiles, s->nfiles + 1,
+		 sizeof *s->files) < 0 || !(c = strdup(path)))
+		return NULL;
+	s->files[s->nfiles++] = c;
+	return c;
+}
+
+/* Note the section's "use:" for --dump-scene: the name as written, and
+ * where it was found as a comment when the path can be one. */
+static int add_use(dem_scene_t *s, const char *section, const char *name,
+		   const char *path, dem_error_t *e)
+{
+	char *text = yaml_text(name), *sec = strdup(section), *t;
+	size_t i;
+
+	for (i = 0; text && path[i]; i++)
+		if ((unsigned char)path[i] < 0x20 || path[i] == 0x7f)
+			break;
+	if (text && !path[i]) {
+		t = xasprintf("%s  # %s", text, path);
+		free(text);
+		text = t;
+	}
+	if (!text || !sec || grow((void **)&s->use, &s->capuse, s->nuse + 1,
+				   sizeof *s->use) < 0) {
+		free(text);
+		free(sec);
+		return dem_error_nomem(e, "scene library");
+	}
+	s->use[s->nuse].section = sec;
+	s->use[s->nuse++].text = text;
+	return DEM_OK;
+}
+
+/* A name with a '/' or ending in .yaml is a path; any other is looked up in
+ * the data directory, and must be a plain file name there. */
+static int use_is_path(const char *name)
+{
+	size_t n = strlen(name);
+
+	return strchr(name, '/') || (n >= 5 && !strcmp(name + n - 5, ".yaml"));
+}
+
+static int use_name_ok(const char *name)
+{
+	return name[0] && name[0] != '.' && name[0] != '-' &&
+	       strspn(name, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+		      "0123456789._-") == strlen(name);
+}
+
+#define USE_WANT "a library name (e.g. 'al7075') or a path to a .yaml file"
+
+/* The file that "use: NAME" (node n, in section) names: a path, relative
+ * to the scene's folder unless absolute, or NAME.yaml in the section's
+ * folder of the data directory.  *path is malloc'd. */
+static int use_path(const dem_scene_t *s, const char *section,
+		    const char *folder, const struct node *n, char **path,
+		    dem_error_t *e)
+{
+	const char *name = n->text, *slash = s->name ? strrchr(s->name, '/') :
+					     NULL;
+	char tried[8192 + 256], *file;
+	const char *why;
+	struct stat st;
+	int rc;
+
+	*path = NULL;
+	if (use_is_path(name)) {
+		if (name[0] == '/' || !slash)
+			*path = strdup(name);
+		else
+			*path = xasprintf("%.*s/%s", (int)(slash - s->name),
+					  s->name, name);
+		if (!*path)
+			return dem_error_nomem(e, "scene library");
+		if (stat(*path, &st) != 0)
+			why = strerror(errno);
+		else if (!S_ISREG(st.st_mode))
+			why = "not a regular file";
+		else
+			return DEM_OK;
+		rc = fail(s, n, e, "%s.use: cannot read '%s': %s", section,
+			  *path, why);
+		free(*path);
+		*path = NULL;
+		return rc;
+	}
+	if (!use_name_ok(name))
+		return fail(s, n, e, "%s.use: expected " USE_WANT ", got "
+			    "'%.60s'", section, name);
+	file = xasprintf("%s.yaml", name);
+	if (!file)
+		return dem_error_nomem(e, "scene library");
+	rc = dem_share_find(folder, file, path, tried, sizeof tried);
+	free(file);
+	if (rc < 0)
+		return dem_error_nomem(e, "scene library");
+	if (rc > 0)
+		return fail(s, n, e, "%s.use: unknown library '%s': no "
+			    "%s.yaml in %s", section, name, name, tried);
+	return DEM_OK;
+}
+
+/* Merge the library mapping lib into the section's mapping sec, taking
+ * lib: a key the scene gives wins; where both give a mapping, the two
+ * merge key by key; sequences and scalars are never mixed.  Returns -1
+ * when out of memory. */
+static int merge(struct node *sec, struct node *lib)
+{
+	size_t i;
+	int rc = 0;
+
+	for (i = 0; i < lib->n && rc == 0; i++) {
+		struct entry *src = &lib->ent[i], *dst;
+
+		dst = map_find(sec, src->key, strlen(src->key));
+		if (!dst) {
+			dst = node_push(sec);
+			if (!dst) {
+				rc = -1;
+				break;
+			}
+			*dst = *src;
+			src->key = NULL;
+			src->val = NULL;
+		} else if (dst->val->kind == NODE_MAP &&
+			   src->val->kind == NODE_MAP) {
+			rc = merge(dst->val, src->val);
+			src->val = NULL;
+		}
+	}
+	node_free(lib);
+	return rc;
+}
+
+/* Read the library file named by section sec's "use:" (node u) and merge
+ * it into the section. */
+static int load_use(dem_scene_t *s, struct entry *sec, const struct node *u,
+		    const char *folder, dem_error_t *e)
+{
+	char got[80], *path, *buf = NULL;
+	const struct entry *inner;
+	struct node *lib = NULL;
+	const char *file;
+	size_t len = 0;
+	int code;
+
+	if (u->kind != NODE_SCALAR || node_is_null(u))
+		return fail(s, u, e, "%s.use: expected " USE_WANT ", got %s",
+			    sec->key, describe(u, got, sizeof got));
+	code = use_path(s, sec->key, folder, u, &path, e);
+	if (code != DEM_OK)
+		return code;
+	file = keep_file(s, path);
+	free(path);
+	if (!file)
+		return dem_error_nomem(e, "scene library");
+	code = read_all(file, &buf, &len, e);
+	if (code == DEM_OK)
+		code = parse_text(s, file, buf, len, &lib, e);
+	free(buf);
+	if (code != DEM_OK)
+		return code;
+	/* one level only: a chain of files would hide where a value is */
+	inner = lib ? map_find(lib, "use", 3) : NULL;
+	if (inner)
+		code = fail_at(s, file, NULL, inner->line, inner->col, e,
+			       "%s.use: a library file cannot use another "
+			       "(use: is for scenes)", sec->key);
+	if (code == DEM_OK)
+		code = add_use(s, sec->key, u->text, file, e);
+	if (code != DEM_OK) {
+		node_free(lib);
+		return code;
+	}
+	if (lib && merge(sec->val, lib) < 0)
+		return dem_error_nomem(e, "scene library");
+	return DEM_OK;
+}
+
+/* Pull in the library files that sections name with "use:". */
+static int load_uses(dem_scene_t *s, dem_error_t *e)
+{
+	char list[128];
+	size_t i, j, k;
+	int code = DEM_OK;
+
+	for (i = 0; i < s->root->n && code == DEM_OK; i++) {
+		struct entry *sec = &s->root->ent[i];
+		const struct entry *u;
+		const char *folder;
+
+		if (sec->val->kind != NODE_MAP ||
+		    !(u = map_find(sec->val, "use", 3)))
+			continue;
+		folder = library_folder(sec->key);
+		if (folder) {
+			code = load_use(s, sec, u->val, folder, e);
+			continue;
+		}
+		for (j = k = 0; j < COUNT(library_folders) && k < sizeof list;
+		     j++)
+			k += (size_t)snprintf(list + k, sizeof list - k, "%s%s",
+					      j == 0 ? "" :
+					      j + 1 < COUNT(library_folders) ?
+					      ", " : " and ",
+					      library_folders[j].section);
+		code = fail_at(s, NULL, NULL, u->line, u->col, e,
+			       "%s.use: only the sections %s take a library "
+			       "file (use:)", sec->key, list);
+	}
 	return code;
 }
 
 int dem_scene_load(dem_scene_t **sp, const char *path, dem_error_t *e)
 {
 	dem_scene_t *s = calloc(1, sizeof *s);
+	struct node *root = NULL;
 	char *buf = NULL;
 	size_t len = 0;
 	int code;
@@ -600,8 +896,14 @@ int dem_scene_load(dem_scene_t **sp, const char *path, dem_error_t *e)
 		else
 			code = read_all(path, &buf, &len, e);
 		if (code == DEM_OK)
-			code = parse_text(s, buf, len, e);
+			code = parse_text(s, NULL, buf, len, &root, e);
 		free(buf);
+		if (root) {
+			node_free(s->root);
+			s->root = root;
+		}
+		if (code == DEM_OK)
+			code = load_uses(s, e);
 		if (code != DEM_OK) {
 			dem_scene_free(s);
 			return code;
@@ -624,8 +926,16 @@ void dem_scene_free(dem_scene_t *s)
 	}
 	for (i = 0; i < s->nkeep; i++)
 		free(s->keep[i]);
+	for (i = 0; i < s->nfiles; i++)
+		free(s->files[i]);
+	for (i = 0; i < s->nuse; i++) {
+		free(s->use[i].section);
+		free(s->use[i].text);
+	}
 	free(s->rec);
 	free(s->keep);
+	free(s->files);
+	free(s->use);
 	free(s->name);
 	free(s);
 }
@@ -783,6 +1093,11 @@ int dem_scene_override(dem_scene_t *s, const char *key, const char *text,
 	if (!key_valid(key))
 		return dem_error_set(e, DEM_EUSAGE, "command line: %s: bad "
 				     "scene key '%s'", origin, key ? key : "");
+	/* a library file is merged as the scene loads, before any option */
+	if (!strcmp(key + strcspn(key, "."), ".use"))
+		return dem_error_set(e, DEM_EUSAGE, "command line: %s: %s "
+				     "cannot be set on the command line; write "
+				     "it in the scene", origin, key);
 	for (;;) {
 		size_t len = strcspn(p, ".");
 		struct entry *en;
@@ -795,8 +1110,8 @@ int dem_scene_override(dem_scene_t *s, const char *key, const char *text,
 		}
 		en = map_find(cur, p, len);
 		if (en && en->val->kind != NODE_MAP && !node_is_null(en->val)) {
-			where(s, en->val->origin, en->val->line, en->val->col,
-			      w, sizeof w);
+			where(s, en->val->file, en->val->origin, en->val->line,
+			      en->val->col, w, sizeof w);
 			return dem_error_set(e, DEM_EUSAGE, "command line: %s: "
 					     "cannot set %s: %.*s is %s (%s)",
 					     origin, key, (int)(p - key + len),
@@ -826,6 +1141,33 @@ static struct rec *rec_find(const dem_scene_t *s, const char *key)
 	return NULL;
 }
 
+/* Before the first key asked in a section that uses a library file, record
+ * its "use:", so that --dump-scene shows first where the section's values
+ * came from.  Returns -1 when out of memory. */
+static int rec_use(dem_scene_t *s, const char *key)
+{
+	size_t len = strcspn(key, ".");
+	const struct use *u = use_find(s, key, len);
+	char *k;
+
+	if (!u || key[len] == '\0')
+		return 0;
+	k = xasprintf("%s.use", u->section);
+	if (!k)
+		return -1;
+	if (!strcmp(k, key) || rec_find(s, k)) {
+		free(k);
+		return 0;
+	}
+	if (grow((void **)&s->rec, &s->caprec, s->nrec + 1,
+		 sizeof *s->rec) < 0 || !(s->rec[s->nrec].val = strdup(u->text))) {
+		free(k);
+		return -1;
+	}
+	s->rec[s->nrec++].key = k;
+	return 0;
+}
+
 /* Note that key was asked for; returns its index or -1 (out of memory). */
 static long rec_ask(dem_scene_t *s, const char *key, dem_error_t *e)
 {
@@ -833,6 +1175,10 @@ static long rec_ask(dem_scene_t *s, const char *key, dem_error_t *e)
 
 	if (r)
 		return (long)(r - s->rec);
+	if (rec_use(s, key) < 0) {
+		dem_error_nomem(e, "scene record");
+		return -1;
+	}
 	if (grow((void **)&s->rec, &s->caprec, s->nrec + 1,
 		 sizeof *s->rec) < 0 || !(s->rec[s->nrec].key = strdup(key))) {
 		dem_error_nomem(e, "scene record");
@@ -1442,7 +1788,7 @@ static int unknown_key(const dem_scene_t *s, const struct entry *en,
 
 	if (!known)
 		return dem_error_nomem(e, "scene check");
-	code = fail_at(s, en->val->origin, en->line, en->col, e,
+	code = fail_at(s, en->val->file, en->val->origin, en->line, en->col, e,
 		       "unknown key '%s'; %s%s", full,
 		       known[0] ? "known keys here: " : "no keys are read here",
 		       known);
@@ -1472,9 +1818,17 @@ static int check_map(const dem_scene_t *s, const struct node *map,
 			return dem_error_nomem(e, "scene check");
 		if (asked(s, full) || (in_list(shared_keys, full) && en->val->kind == NODE_SCALAR))
 			code = DEM_OK;
+		else if (!strcmp(en->key, "use") &&
+			 use_find(s, prefix, strlen(prefix)))
+			code = DEM_OK;  /* the section's library file */
 		else if ((en->val->kind == NODE_MAP || node_is_null(en->val)) &&
 			 asked_below(s, full))
 			code = check_map(s, en->val, full, e);
+		else if (en->val->file)
+			/* a library may hold what other laws need (a hardening
+			 * table beside Johnson-Cook): what the program does not
+			 * read of it is not the scene's typo */
+			code = DEM_OK;
 		else
 			code = unknown_key(s, en, prefix, full, e);
 		free(full);
@@ -1492,7 +1846,7 @@ static int unknown_section(const dem_scene_t *s, const struct entry *en,
 	for (i = 0; known_sections[i] && k < sizeof known; i++)
 		k += (size_t)snprintf(known + k, sizeof known - k, "%s%s",
 				      i ? ", " : "", known_sections[i]);
-	return fail_at(s, en->val->origin, en->line, en->col, e,
+	return fail_at(s, en->val->file, en->val->origin, en->line, en->col, e,
 		       "unknown section '%s'; known sections: %s", en->key,
 		       known);
 }

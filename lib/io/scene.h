@@ -22,7 +22,17 @@ typedef struct dem_scene dem_scene_t;
 
 /* Load a scene from path; path NULL gives an empty scene (every value at its
  * default).  Syntax errors are DEM_EINPUT with file:line:col; an unreadable
- * file is DEM_EIO with strerror. */
+ * file is DEM_EIO with strerror.
+ *
+ * A section with a library folder (material: share/materials, shot:
+ * share/shots; see core/share.h for share) may say "use: NAME": the file
+ * NAME.yaml there (or NAME itself, relative to the scene's folder, when it
+ * has a '/' or ends in .yaml) is merged into the section as it loads: the
+ * scene's keys win, mappings merge key by key, sequences and scalars are
+ * replaced whole.  Errors in its values name that file; dem_scene_check
+ * passes over its keys that no getter asked for (a library may hold the
+ * data of several laws); --dump-scene shows the use: line first in its
+ * section. */
 int dem_scene_load(dem_scene_t **s, const char *path, dem_error_t *e);
 void dem_scene_free(dem_scene_t *s);
 

@@ -12,12 +12,14 @@
 #include <stdint.h>
 #include <cmocka.h>
 
+#include <errno.h>
 #include <float.h>
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "io/scene.h"
@@ -1139,6 +1141,411 @@ static void test_many_keys(void **state)
 	dem_scene_free(s);
 }
 
+/* ---- library files (use:) ------------------------------------------------ */
+
+/* A data directory of the test's own, so that no test depends on the
+ * toolkit's real library files: DEM_SHARE=<tmp>/share, with materials/ and
+ * shots/.  Returns the folder. */
+static const char *use_share(void)
+{
+	static char share[4200];
+	char cwd[4096];
+
+	assert_non_null(getcwd(cwd, sizeof cwd));
+	snprintf(share, sizeof share, "%s/share", cwd);
+	assert_true(mkdir("share", 0777) == 0 || errno == EEXIST);
+	assert_true(mkdir("share/materials", 0777) == 0 || errno == EEXIST);
+	assert_true(mkdir("share/shots", 0777) == 0 || errno == EEXIST);
+	assert_int_equal(setenv("DEM_SHARE", share, 1), 0);
+	return share;
+}
+
+/* Text of a material library: line numbers matter to the tests below. */
+static const char al_yaml[] =
+	"# a made-up aluminium, for the tests\n"        /* 1 */
+	"E: 72 GPa\n"                                   /* 2 */
+	"nu: 0.33\n"                                    /* 3 */
+	"rho: 2700 kg/m^3\n"                            /* 4 */
+	"law: johnson-cook\n"                           /* 5 */
+	"johnson-cook:\n"                               /* 6 */
+	"  A: 300 MPa\n"                                /* 7 */
+	"  B: 400 MPa\n"                                /* 8 */
+	"  n: 0.3\n"                                    /* 9 */
+	"table: [1, 2, 3]\n"                            /* 10 */
+	"rate: {law: cowper-symonds, C: 6500 1/s}\n";   /* 11 */
+
+/* Keys the scene gives win; mappings merge key by key, at any depth;
+ * sequences and scalars are replaced whole.  Reference: the merge rule of
+ * dem-scene(5), "Library files". */
+static void test_use_merge(void **state)
+{
+	dem_error_t e = { 0, "" };
+	dem_scene_t *s;
+	const char *law;
+	double v;
+
+	(void)state;
+	use_share();
+	write_file("share/materials/al.yaml", al_yaml);
+	s = load("material:\n"
+		 "  use: al\n"
+		 "  nu: 0.3\n"
+		 "  table: [4, 5]\n"
+		 "  johnson-cook:\n"
+		 "    B: 500 MPa\n"
+		 "    T: 400 K\n"
+		 "  rate: 1\n");
+	/* from the library */
+	assert_int_equal(dem_scene_quantity(s, "material.E", DEM_DIM_PRESSURE,
+					    NAN, 0, HUGE_VAL, &v, &e), 0);
+	assert_true(v == 72e9);
+	assert_int_equal(dem_scene_string(s, "material.law", NULL, &law, &e),
+			 0);
+	assert_string_equal(law, "johnson-cook");
+	/* the scene's scalar wins */
+	assert_int_equal(dem_scene_quantity(s, "material.nu", DEM_DIM_NONE,
+					    NAN, 0, 0.5, &v, &e), 0);
+	assert_true(v == 0.3);
+	/* deep merge: A from the library, B replaced, T added */
+	assert_int_equal(dem_scene_quantity(s, "material.johnson-cook.A",
+					    DEM_DIM_PRESSURE, NAN, 0, HUGE_VAL,
+					    &v, &e), 0);
+	assert_true(v == 300e6);
+	assert_int_equal(dem_scene_quantity(s, "material.johnson-cook.B",
+					    DEM_DIM_PRESSURE, NAN, 0, HUGE_VAL,
+					    &v, &e), 0);
+	assert_true(v == 500e6);
+	assert_int_equal(dem_scene_quantity(s, "material.johnson-cook.T",
+					    DEM_DIM_TEMPERATURE, NAN, 0,
+					    HUGE_VAL, &v, &e), 0);
+	assert_true(v == 400);
+	assert_int_equal(dem_scene_quantity(s, "material.johnson-cook.n",
+					    DEM_DIM_NONE, NAN, 0, 1, &v, &e),
+			 0);
+	assert_true(v == 0.3);
+	/* a sequence is replaced, not appended to */
+	assert_int_equal(dem_scene_length(s, "material.table"), 2);
+	/* a scalar of the scene replaces a mapping of the library whole */
+	assert_false(dem_scene_has(s, "material.rate.law"));
+	assert_int_equal(dem_scene_length(s, "material.rate"), 1);
+	dem_scene_free(s);
+}
+
+/* A value that came from a library file is reported at its own file,
+ * line and column; the scene's values at the scene's. */
+static void test_use_positions(void **state)
+{
+	char want[8192], lib[4300];
+	dem_error_t e = { 0, "" };
+	const char *share = use_share();
+	dem_scene_t *s;
+	double v;
+
+	(void)state;
+	write_file("share/materials/bad.yaml",
+		   "E: 72 GPa\n"
+		   "rho: 2700 m\n"
+		   "johnson-cook:\n"
+		   "  A: fast\n");
+	s = load("material:\n  use: bad\n  nu: 2\n");
+	assert_int_equal(dem_scene_quantity(s, "material.rho", DEM_DIM_DENSITY,
+					    NAN, 0, HUGE_VAL, &v, &e),
+			 DEM_EINPUT);
+	snprintf(want, sizeof want, "%s/materials/bad.yaml:2:6: material.rho: "
+		 "unit 'm' is a length, expected a density (e.g. "
+		 "'7800 kg/m^3')", share);
+	assert_string_equal(e.msg, want);
+	dem_error_clear(&e);
+	assert_int_equal(dem_scene_quantity(s, "material.johnson-cook.A",
+					    DEM_DIM_PRESSURE, NAN, 0, HUGE_VAL,
+					    &v, &e), DEM_EINPUT);
+	snprintf(want, sizeof want, "%s/materials/bad.yaml:4:6: "
+		 "material.johnson-cook.A: expected a pressure (e.g. "
+		 "'72 GPa'), got 'fast' (not a number)", share);
+	assert_string_equal(e.msg, want);
+	dem_error_clear(&e);
+	/* a problem the program finds after reading points there too */
+	assert_int_equal(dem_scene_error(s, "material.E", &e, "too stiff"),
+			 DEM_EINPUT);
+	snprintf(want, sizeof want, "%s/materials/bad.yaml:1:4: material.E: "
+		 "too stiff", share);
+	assert_string_equal(e.msg, want);
+	dem_error_clear(&e);
+	/* the scene's own value still names the scene */
+	assert_int_equal(dem_scene_quantity(s, "material.nu", DEM_DIM_NONE,
+					    NAN, 0, 0.5, &v, &e), DEM_EINPUT);
+	assert_string_equal(e.msg, "strip.yaml:3:7: material.nu: 2 is out of "
+			    "range, expected a number in [0, 0.5]");
+	dem_error_clear(&e);
+	dem_scene_free(s);
+
+	/* a syntax error in the library names the library */
+	write_file("share/materials/broken.yaml", "E: 72 GPa\n  nu: [\n");
+	snprintf(lib, sizeof lib, "%s/materials/broken.yaml:2:", share);
+	write_file("strip.yaml", "material:\n  use: broken\n");
+	s = (dem_scene_t *)&e;
+	assert_int_equal(dem_scene_load(&s, "strip.yaml", &e), DEM_EINPUT);
+	assert_null(s);
+	if (strncmp(e.msg, lib, strlen(lib)) != 0)
+		fail_msg("'%s' does not start with '%s'", e.msg, lib);
+
+	/* so does a library that is not a mapping */
+	write_file("share/materials/list.yaml", "- E\n- nu\n");
+	snprintf(want, sizeof want, "%s/materials/list.yaml:1:1: a library "
+		 "file is a mapping of a section's settings (E:, nu:, ...), "
+		 "got a sequence", share);
+	load_fails("material:\n  use: list\n", DEM_EINPUT, want);
+}
+
+/* An unknown library name is an error at the value of use:, naming the
+ * folder searched and why that one; so are names that cannot be one. */
+static void test_use_unknown(void **state)
+{
+	const char *share = use_share();
+	char want[8192];
+	dem_error_t e = { 0, "" };
+	dem_scene_t *s = (dem_scene_t *)&e;
+
+	(void)state;
+	snprintf(want, sizeof want, "strip.yaml:2:8: material.use: unknown "
+		 "library 'al9999': no al9999.yaml in %s/materials (from "
+		 "DEM_SHARE)", share);
+	load_fails("material:\n  use: al9999\n", DEM_EINPUT, want);
+	snprintf(want, sizeof want, "strip.yaml:2:8: shot.use: unknown "
+		 "library 'S230': no S230.yaml in %s/shots (from DEM_SHARE)",
+		 share);
+	load_fails("shot:\n  use: S230\n", DEM_EINPUT, want);
+	load_fails("material:\n  use: a b\n", DEM_EINPUT,
+		   "strip.yaml:2:8: material.use: expected a library name "
+		   "(e.g. 'al7075') or a path to a .yaml file, got 'a b'");
+	load_fails("material:\n  use: .hidden\n", DEM_EINPUT,
+		   "strip.yaml:2:8: material.use: expected a library name "
+		   "(e.g. 'al7075') or a path to a .yaml file, got '.hidden'");
+	load_fails("material:\n  use:\n", DEM_EINPUT,
+		   "strip.yaml:2:7: material.use: expected a library name "
+		   "(e.g. 'al7075') or a path to a .yaml file, got an empty "
+		   "value");
+	load_fails("material:\n  use: [al, steel]\n", DEM_EINPUT,
+		   "strip.yaml:2:8: material.use: expected a library name "
+		   "(e.g. 'al7075') or a path to a .yaml file, got a sequence");
+	/* a path is relative to the scene's folder */
+	load_fails("material:\n  use: ../al.yaml\n", DEM_EINPUT,
+		   "strip.yaml:2:8: material.use: cannot read '../al.yaml': "
+		   "No such file or directory");
+
+	/* without DEM_SHARE the folder is found from the program, or is the
+	 * compiled-in one; either way the message says where it looked */
+	assert_int_equal(unsetenv("DEM_SHARE"), 0);
+	write_file("strip.yaml", "material:\n  use: no-such-library-x\n");
+	assert_int_equal(dem_scene_load(&s, "strip.yaml", &e), DEM_EINPUT);
+	assert_null(s);
+	assert_non_null(strstr(e.msg, "strip.yaml:2:8: material.use: unknown "
+			       "library 'no-such-library-x': no "
+			       "no-such-library-x.yaml in /"));
+	assert_non_null(strstr(e.msg, "/materials ("));
+}
+
+/* use: is for the sections that have a library folder; others refuse it
+ * at the key.  The shot section takes one from shots/. */
+static void test_use_sections(void **state)
+{
+	dem_error_t e = { 0, "" };
+	dem_scene_t *s;
+	double v;
+
+	(void)state;
+	use_share();
+	write_file("share/shots/s230.yaml", "radius: 0.3 mm\n"
+		   "density: 7800 kg/m^3\n");
+	load_fails("pack:\n  n: 5\n  use: al\n", DEM_EINPUT,
+		   "strip.yaml:3:3: pack.use: only the sections material and "
+		   "shot take a library file (use:)");
+	load_fails("detect: {use: al}\n", DEM_EINPUT,
+		   "strip.yaml:1:10: detect.use: only the sections material "
+		   "and shot take a library file (use:)");
+	s = load("shot:\n  use: s230\n  speed: 50 m/s\n");
+	assert_int_equal(dem_scene_quantity(s, "shot.radius", DEM_DIM_LENGTH,
+					    NAN, 0, HUGE_VAL, &v, &e), 0);
+	assert_true(v == 0.0003);
+	assert_int_equal(dem_scene_quantity(s, "shot.density",
+					    DEM_DIM_DENSITY, NAN, 0, HUGE_VAL,
+					    &v, &e), 0);
+	assert_true(v == 7800);
+	dem_scene_free(s);
+	/* a use: deeper than a section is no library: an unknown key */
+	s = load("material:\n  rate:\n    use: al\n");
+	assert_int_equal(dem_scene_quantity(s, "material.rate.C", DEM_DIM_RATE,
+					    1, 0, HUGE_VAL, &v, &e), 0);
+	assert_int_equal(dem_scene_check(s, (const char *const[]){ "material",
+					 NULL }, &e), DEM_EINPUT);
+	assert_string_equal(e.msg, "strip.yaml:3:5: unknown key "
+			    "'material.rate.use'; known keys here: C");
+	dem_scene_free(s);
+}
+
+/* A library file cannot use another: refused at its own position. */
+static void test_use_in_library(void **state)
+{
+	const char *share = use_share();
+	char want[8192];
+
+	(void)state;
+	write_file("share/materials/al.yaml", al_yaml);
+	write_file("share/materials/chain.yaml", "E: 1 GPa\nuse: al\n");
+	snprintf(want, sizeof want, "%s/materials/chain.yaml:2:1: "
+		 "material.use: a library file cannot use another (use: is for "
+		 "scenes)", share);
+	load_fails("material:\n  use: chain\n", DEM_EINPUT, want);
+}
+
+/* A name with a '/' or ending in .yaml is a file relative to the scene's
+ * folder, and messages name it as found from there. */
+static void test_use_path(void **state)
+{
+	char abs[4200], text[4300], cwd[4096];
+	dem_error_t e = { 0, "" };
+	dem_scene_t *s = NULL;
+	double v;
+
+	(void)state;
+	use_share();
+	assert_true(mkdir("sub", 0777) == 0 || errno == EEXIST);
+	write_file("sub/mine.yaml", "E: 70 GPa\nnu: 3 m\n");
+	write_file("sub/strip.yaml", "material:\n  use: mine.yaml\n");
+	assert_int_equal(dem_scene_load(&s, "sub/strip.yaml", &e), 0);
+	assert_int_equal(dem_scene_quantity(s, "material.E", DEM_DIM_PRESSURE,
+					    NAN, 0, HUGE_VAL, &v, &e), 0);
+	assert_true(v == 70e9);
+	assert_int_equal(dem_scene_quantity(s, "material.nu", DEM_DIM_NONE,
+					    NAN, 0, 0.5, &v, &e), DEM_EINPUT);
+	assert_string_equal(e.msg, "sub/mine.yaml:2:5: material.nu: unit 'm' "
+			    "is a length, expected a number (e.g. '0.5')");
+	dem_scene_free(s);
+	/* an absolute path is taken as it is */
+	assert_non_null(getcwd(cwd, sizeof cwd));
+	snprintf(abs, sizeof abs, "%s/sub/mine.yaml", cwd);
+	snprintf(text, sizeof text, "material:\n  use: %s\n", abs);
+	s = load(text);
+	assert_int_equal(dem_scene_quantity(s, "material.E", DEM_DIM_PRESSURE,
+					    NAN, 0, HUGE_VAL, &v, &e), 0);
+	assert_true(v == 70e9);
+	dem_scene_free(s);
+}
+
+/* --dump-scene shows the use: line first in its section (with the file
+ * found, as a comment) and the values resolved from the library; the dump
+ * loads again to the same values.  dem_scene_check knows use:, passes over
+ * library keys the program did not read, and still catches the scene's
+ * own typos. */
+static void test_use_dump_check(void **state)
+{
+	static const char *const material[] = { "material", NULL };
+	const char *share = use_share();
+	char want[8192], *out, *again;
+	dem_error_t e = { 0, "" };
+	dem_scene_t *s;
+	double v[3];
+
+	(void)state;
+	write_file("share/materials/al.yaml", al_yaml);
+	s = load("material:\n  use: al\n  nu: 0.3\n"
+		 "  johnson-cook: {T: 500 K}\n");
+	assert_int_equal(dem_scene_quantity(s, "material.E", DEM_DIM_PRESSURE,
+					    NAN, 0, HUGE_VAL, &v[0], &e), 0);
+	assert_int_equal(dem_scene_quantity(s, "material.nu", DEM_DIM_NONE,
+					    NAN, 0, 0.5, &v[1], &e), 0);
+	assert_int_equal(dem_scene_quantity(s, "material.johnson-cook.T",
+					    DEM_DIM_TEMPERATURE, 293, 0,
+					    HUGE_VAL, &v[2], &e), 0);
+	assert_int_equal(dem_scene_check(s, material, &e), 0);
+	out = dump_to_string(s);
+	snprintf(want, sizeof want,
+		 "material:\n"
+		 "  use: al  # %s/materials/al.yaml\n"
+		 "  E: 72000000000 Pa\n"
+		 "  nu: 0.3\n"
+		 "  johnson-cook:\n"
+		 "    T: 500 K\n", share);
+	assert_string_equal(out, want);
+	dem_scene_free(s);
+
+	/* the dump is a scene: the same values, the same dump */
+	s = load(out);
+	assert_int_equal(dem_scene_quantity(s, "material.E", DEM_DIM_PRESSURE,
+					    NAN, 0, HUGE_VAL, &v[0], &e), 0);
+	assert_int_equal(dem_scene_quantity(s, "material.nu", DEM_DIM_NONE,
+					    NAN, 0, 0.5, &v[1], &e), 0);
+	assert_int_equal(dem_scene_quantity(s, "material.johnson-cook.T",
+					    DEM_DIM_TEMPERATURE, 293, 0,
+					    HUGE_VAL, &v[2], &e), 0);
+	assert_true(v[0] == 72e9 && v[1] == 0.3 && v[2] == 500);
+	again = dump_to_string(s);
+	assert_string_equal(again, out);
+	free(again);
+	free(out);
+	dem_scene_free(s);
+
+	/* use: is known even where the program read nothing of the section */
+	s = load("material:\n  use: al\n");
+	assert_int_equal(dem_scene_check(s, material, &e), 0);
+	dem_scene_free(s);
+
+	/* a typo of the scene is caught beside a library */
+	s = load("material:\n  use: al\n  Ee: 70 GPa\n");
+	assert_int_equal(dem_scene_quantity(s, "material.E", DEM_DIM_PRESSURE,
+					    NAN, 0, HUGE_VAL, &v[0], &e), 0);
+	assert_int_equal(dem_scene_check(s, material, &e), DEM_EINPUT);
+	assert_string_equal(e.msg, "strip.yaml:3:3: unknown key 'material.Ee'; "
+			    "known keys here: E, use");
+	dem_scene_free(s);
+}
+
+/* A command-line option overrides a value that came from a library, at
+ * any depth; its errors name the option.  use: itself cannot be set from
+ * the command line. */
+static void test_use_override(void **state)
+{
+	dem_error_t e = { 0, "" };
+	dem_scene_t *s;
+	double v;
+
+	(void)state;
+	use_share();
+	write_file("share/materials/al.yaml", al_yaml);
+	s = load("material:\n  use: al\n");
+	assert_int_equal(dem_scene_override(s, "material.E", "70 GPa", "--E",
+					    &e), 0);
+	assert_int_equal(dem_scene_override(s, "material.johnson-cook.A",
+					    "310 MPa", "--jc-A", &e), 0);
+	assert_int_equal(dem_scene_quantity(s, "material.E", DEM_DIM_PRESSURE,
+					    NAN, 0, HUGE_VAL, &v, &e), 0);
+	assert_true(v == 70e9);
+	assert_int_equal(dem_scene_quantity(s, "material.johnson-cook.A",
+					    DEM_DIM_PRESSURE, NAN, 0, HUGE_VAL,
+					    &v, &e), 0);
+	assert_true(v == 310e6);
+	/* the library's neighbours of the overridden key stay */
+	assert_int_equal(dem_scene_quantity(s, "material.johnson-cook.B",
+					    DEM_DIM_PRESSURE, NAN, 0, HUGE_VAL,
+					    &v, &e), 0);
+	assert_true(v == 400e6);
+	assert_int_equal(dem_scene_override(s, "material.rho", "2 m", "--rho",
+					    &e), 0);
+	assert_int_equal(dem_scene_quantity(s, "material.rho",
+					    DEM_DIM_DENSITY, NAN, 0, HUGE_VAL,
+					    &v, &e), DEM_EUSAGE);
+	assert_string_equal(e.msg, "command line: --rho: material.rho: unit "
+			    "'m' is a length, expected a density (e.g. "
+			    "'7800 kg/m^3')");
+	dem_error_clear(&e);
+	assert_int_equal(dem_scene_override(s, "material.use", "steel",
+					    "--use", &e), DEM_EUSAGE);
+	assert_string_equal(e.msg, "command line: --use: material.use cannot "
+			    "be set on the command line; write it in the "
+			    "scene");
+	dem_scene_free(s);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -1171,6 +1578,14 @@ int main(void)
 		cmocka_unit_test(test_dump_numbers),
 		cmocka_unit_test(test_dump_edges),
 		cmocka_unit_test(test_many_keys),
+		cmocka_unit_test(test_use_merge),
+		cmocka_unit_test(test_use_positions),
+		cmocka_unit_test(test_use_unknown),
+		cmocka_unit_test(test_use_sections),
+		cmocka_unit_test(test_use_in_library),
+		cmocka_unit_test(test_use_path),
+		cmocka_unit_test(test_use_dump_check),
+		cmocka_unit_test(test_use_override),
 	};
 
 	return cmocka_run_group_tests(tests, group_setup, group_teardown);
