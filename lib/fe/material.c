@@ -689,7 +689,9 @@ static int return_general(const dem_mat_t *m, double sig[6], double *ep,
 	double ctot = 0;
 	for (int i = 0; i < nk; i++)
 		ctot += m->kin_C[i];
-	double x = f0 / (3 * m->G + ctot), fp = 0, f = 0;
+	/* the first Newton step from 0 with the slopes at the start (the
+	 * infinite slope of Johnson-Cook at ep = 0 left out) */
+	double x = f0 / (3 * m->G + ctot + (h0 < HUGE_VAL ? h0 : 0)), fp = 0, f = 0;
 	if (!(x < hi))
 		x = 0.5 * hi;
 	int done = 0;
