@@ -15,3 +15,27 @@ usage_error() {
 	[[ ${stderr_lines[0]} == "$prog: "* ]] || return 1
 	[ "${stderr_lines[1]}" = "Try '$prog --help' for more information." ]
 }
+
+# profile_stream SHAPE: a text profile stream with two passes of SHAPE.
+profile_stream() {
+	awk 'BEGIN {
+		print "# dem profile 1"
+		printf "# columns pass:u32:- depth:f64:m sxx:f64:Pa syy:f64:Pa szz:f64:Pa sxy:f64:Pa syz:f64:Pa szx:f64:Pa"
+		printf " exx:f64:- eyy:f64:- ezz:f64:- exy:f64:- eyz:f64:- ezx:f64:- ep:f64:-"
+		printf " sd_sxx:f64:Pa sd_syy:f64:Pa sd_szz:f64:Pa sd_sxy:f64:Pa sd_syz:f64:Pa sd_szx:f64:Pa"
+		print " sd_exx:f64:- sd_eyy:f64:- sd_ezz:f64:- sd_exy:f64:- sd_eyz:f64:- sd_ezx:f64:- sd_ep:f64:- n:u32:-"
+		print "# format text"
+		print "# data"
+	}
+	{ d[NR] = $1 * 1e-3; s[NR] = $2 * 1e6; ep[NR] = $3 }
+	END {
+		for (p = 1; p <= 2; p++)
+			for (k = 1; k <= NR; k++) {
+				f = p == 1 ? 0.5 : 1
+				printf "%d %.17g %.17g %.17g 0 0 0 0 0 0 0 0 0 0 %.17g", p, d[k], f * s[k], f * s[k], ep[k]
+				for (c = 0; c < 13; c++) printf " 0"
+				print " 10"
+			}
+		print "# end " 2 * NR
+	}' "$1"
+}

@@ -1,0 +1,80 @@
+#!/bin/sh
+# report.sh OUT - REPORT.md of examples/materials from its outputs:
+# law-bench's table (ns per element-cycle of each law), the baseline
+# comparison of the linear law, the one-point against full integration
+# impacts, the curves of the library.
+set -eu
+out=$1
+echo "# The hardening and rate laws: cost and checks"
+echo
+echo "Measured $(date '+%F') on $(nproc) cores (load average at the end: $(cut -d' ' -f1-3 /proc/loadavg))."
+echo
+echo "## Cost per element-cycle (law-bench, every element flowing)"
+echo
+awk -F'\t' 'NR == 1 { next }
+	{ k = $1 "/" $2; ns[k] = $7; mn[k] = $8; mx[k] = $9; cpu[k] = $10; pf[k] = $11
+	  if (!($1 in seen)) { seen[$1] = 1; order[++n] = $1 } ne = $4; thr = $3 }
+	END {
+		printf "Block of %d elements, %d thread(s); median of the repeats (fastest-slowest), ns per\n", ne, thr
+		printf "element-cycle, and against the linear law in the same run. \"plastic\" is the share\n"
+		printf "of the points that flowed: the timing is the worst case, every point returning at every step.\n\n"
+		printf "| law | one-point ns | vs linear | full ns | vs linear | plastic share |\n"
+		printf "|---|---:|---:|---:|---:|---:|\n"
+		for (i = 1; i <= n; i++) {
+			l = order[i]; a = l "/1pt"; b = l "/full"
+			printf "| %s | %.1f (%.1f-%.1f) | %.2f | %.1f (%.1f-%.1f) | %.2f | %.2f |\n", l,
+				ns[a], mn[a], mx[a], ns[a] / ns["linear/1pt"],
+				ns[b], mn[b], mx[b], ns[b] / ns["linear/full"], pf[a]
+		}
+	}' "$out/laws.tsv"
+echo
+echo "## The linear law before and after (examples/cost/fe-bench.c, alternating runs)"
+echo
+echo "fe-bench built on the code before the laws and on this checkout, run one after"
+echo "the other in rounds (block 40 x 40 x 25, 1 thread); ns per element-cycle, the"
+echo "median over the rounds of each round's median."
+echo
+awk -F'\t' 'NR == 1 { next }
+	{ k = $1 SUBSEP $3; v[k, ++c[k]] = $11; cfg[$3] = 1 }
+	function med(k,   i, j, t, n, a) {
+		n = c[k]
+		for (i = 1; i <= n; i++) a[i] = v[k, i]
+		for (i = 1; i <= n; i++) for (j = i + 1; j <= n; j++) if (a[j] < a[i]) { t = a[i]; a[i] = a[j]; a[j] = t }
+		return n % 2 ? a[(n + 1) / 2] : 0.5 * (a[n / 2] + a[n / 2 + 1])
+	}
+	END {
+		printf "| configuration | before (ns) | after (ns) | after / before | rounds |\n|---|---:|---:|---:|---:|\n"
+		for (f in cfg) {
+			b = med("base" SUBSEP f); a = med("this" SUBSEP f)
+			printf "| %s | %.1f | %.1f | %.3f | %d |\n", f, b, a, a / b, c["this" SUBSEP f]
+		}
+	}' "$out/baseline.tsv"
+echo
+echo "## One shot, one-point against full integration (impact.sh)"
+echo
+echo "Ch. 7.5's shot (0.5 mm, 19 m/s) on the examples/ch75 block with 0.1 mm elements;"
+echo "residual sxx (MPa) at the impact point.  The acceptance asks the two rules to agree"
+echo "within 5 % of the peak."
+echo
+awk -F'\t' 'NR == 1 { next }
+	{ r[$1, $2] = $0; p[$1, $2] = $4; if (!($1 in seen)) { seen[$1] = 1; order[++n] = $1 } }
+	END {
+		printf "| law | rule | surface sxx | peak sxx | at depth (mm) | zero (mm) | steps | wall s |\n"
+		printf "|---|---|---:|---:|---:|---:|---:|---:|\n"
+		for (i = 1; i <= n; i++) for (k = 0; k < 2; k++) {
+			rule = k ? "full" : "one_point"; split(r[order[i], rule], f, "\t")
+			printf "| %s | %s | %s | %s | %s | %s | %s | %s |\n", f[1], f[2], f[3], f[4], f[5], f[6], f[7], f[8]
+		}
+		printf "\n| law | peak, one-point against full |\n|---|---:|\n"
+		for (i = 1; i <= n; i++) {
+			a = p[order[i], "one_point"]; b = p[order[i], "full"]
+			printf "| %s | %+.1f %% |\n", order[i], 100 * (a - b) / (b < 0 ? -b : b)
+		}
+	}' "$out/impact.tsv"
+echo
+echo "## The library's curves"
+echo
+echo "![uniaxial curves of share/materials](curves.png)"
+echo
+echo "Monotonic tension and three cycles of +-1 % strain of every file in share/materials,"
+echo "through the same return as the explicit and implicit stages (curve.c)."
