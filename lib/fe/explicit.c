@@ -79,6 +79,15 @@ struct dem_fe {
 	dem_fe_opts_t o;
 	size_t nn, ne;
 	double *x, *v, *fi, *fx, *mass;
+	const uint8_t *fix;   /* the node loop's constraints: mesh->fix, or
+			       * fixown with the periodic slaves held */
+	/* periodic ties (mesh->tie): a slave's mass and forces go to its
+	 * master, and the node loop leaves it alone (mass 0, all held); after
+	 * the node loop it takes the master's velocity and position plus
+	 * toff, the reference offset */
+	size_t ntie;
+	uint8_t *fixown;
+	double *pmass, *toff; /* pmass: the mass of a node's tied set */
 	/* element state */
 	size_t nblk;
 	double *sig, *ep, *Qs, *eps, *kdt;
@@ -165,6 +174,9 @@ void dem_fe_free(dem_fe_t *fe)
 	if (!fe)
 		return;
 	free(fe->x), free(fe->v), free(fe->fi), free(fe->fx), free(fe->mass);
+	free(fe->fixown), free(fe->toff);
+	if (fe->pmass != fe->mass)
+		free(fe->pmass);
 	free(fe->sig), free(fe->ep), free(fe->Qs), free(fe->eps), free(fe->kdt);
 	free(fe->kin);
 	free(fe->run);
@@ -173,6 +185,66 @@ void dem_fe_free(dem_fe_t *fe)
 		free(fe->pl[i].quad), free(fe->pl[i].t), free(fe->pl[i].p);
 	free(fe->pl);
 	free(fe);
+}
+
+/* The periodic ties: the masters take their slaves' masses, the slaves
+ * are held in the node loop and keep the offset of the reference mesh. */
+static int tie_setup(dem_fe_t *fe)
+{
+	const dem_mesh_t *m = fe->mesh;
+	size_t nt = m->ntie;
+	fe->ntie = nt;
+	fe->fixown = malloc(fe->nn);
+	fe->pmass = malloc(fe->nn * sizeof *fe->pmass);
+	fe->toff = malloc(3 * nt * sizeof *fe->toff);
+	if (!fe->fixown || !fe->pmass || !fe->toff)
+		return -1;
+	memcpy(fe->fixown, m->fix, fe->nn);
+	for (size_t t = 0; t < nt; t++) {
+		size_t s = m->tie[2 * t], ms = m->tie[2 * t + 1];
+		fe->mass[ms] += fe->mass[s];
+		fe->fixown[s] = DEM_FIX_X | DEM_FIX_Y | DEM_FIX_Z;
+		for (int c = 0; c < 3; c++)
+			fe->toff[3 * t + c] = m->X[3 * s + c] - m->X[3 * ms + c];
+	}
+	memcpy(fe->pmass, fe->mass, fe->nn * sizeof *fe->pmass);
+	for (size_t t = 0; t < nt; t++) {
+		size_t s = m->tie[2 * t];
+		fe->pmass[s] = fe->mass[m->tie[2 * t + 1]];
+		fe->mass[s] = 0;
+	}
+	fe->fix = fe->fixown;
+	return 0;
+}
+
+/* Before the node loop: the slaves' forces onto their masters. */
+static void tie_gather(dem_fe_t *fe)
+{
+	const uint32_t *tie = fe->mesh->tie;
+	for (size_t t = 0; t < fe->ntie; t++) {
+		size_t s = 3 * (size_t)tie[2 * t], ms = 3 * (size_t)tie[2 * t + 1];
+		for (int c = 0; c < 3; c++) {
+			fe->fi[ms + c] += fe->fi[s + c];
+			fe->fi[s + c] = 0;
+			if (fe->ext) {
+				fe->fx[ms + c] += fe->fx[s + c];
+				fe->fx[s + c] = 0;
+			}
+		}
+	}
+}
+
+/* After the node loop: the slaves move with their masters. */
+static void tie_scatter(dem_fe_t *fe)
+{
+	const uint32_t *tie = fe->mesh->tie;
+	for (size_t t = 0; t < fe->ntie; t++) {
+		size_t s = 3 * (size_t)tie[2 * t], ms = 3 * (size_t)tie[2 * t + 1];
+		for (int c = 0; c < 3; c++) {
+			fe->v[s + c] = fe->v[ms + c];
+			fe->x[s + c] = fe->x[ms + c] + fe->toff[3 * t + c];
+		}
+	}
 }
 
 int dem_fe_create(dem_fe_t **out, const dem_mesh_t *mesh, const dem_mat_t *mat,
@@ -319,6 +391,10 @@ int dem_fe_create(dem_fe_t **out, const dem_mesh_t *mesh, const dem_mat_t *mat,
 			for (size_t l = n - (sl->nb - 1) * NB; l < NB; l++)
 				fe->kdt[b * NB + l] = fe->kdt[b * NB + (n - 1) % NB];
 		}
+	fe->fix = mesh->fix;
+	fe->pmass = fe->mass;
+	if (mesh->ntie > 0 && tie_setup(fe))
+		goto nomem;
 	fe->dt_stable = o->dt_factor * dtmin;
 	*out = fe;
 	return DEM_OK;
@@ -461,7 +537,7 @@ typedef struct coef {
 static inline __attribute__((always_inline)) void node_range(dem_fe_t *fe, const coef_t *c, size_t n0, size_t n1,
 			      double sum[S_N], const int ext)
 {
-	const uint8_t *fix = fe->mesh->fix;
+	const uint8_t *fix = fe->fix;
 	double *restrict x = fe->x, *restrict v = fe->v, *restrict fi = fe->fi;
 	double *restrict fx = fe->fx;
 	const double *restrict mass = fe->mass;
@@ -924,9 +1000,13 @@ int dem_fe_step(dem_fe_t *fe, double dt, dem_error_t *e)
 	}
 	int nthr = fe->nthr;
 	double w0 = dem_wall();
+	if (fe->ntie)
+		tie_gather(fe);
 #pragma omp parallel for schedule(static) num_threads(nthr) if (nthr > 1)
 	for (int ch = 0; ch < NCHUNK; ch++)
 		node_chunk(fe, &c, ch);
+	if (fe->ntie)
+		tie_scatter(fe);
 	double w1 = dem_wall();
 
 	/* energies at t_n */
@@ -1020,7 +1100,7 @@ double *dem_fe_velocity(dem_fe_t *fe)
 
 const double *dem_fe_mass(const dem_fe_t *fe)
 {
-	return fe->mass;
+	return fe->pmass;
 }
 
 void dem_fe_displacements(const dem_fe_t *fe, double *u)
@@ -1205,6 +1285,8 @@ static void ckpt_head(const dem_fe_t *fe, ckpt_head_t *h)
 	c = crc_add(c, m->hex, 8 * m->ne * sizeof *m->hex);
 	if (m->fix)
 		c = crc_add(c, m->fix, m->nn);
+	if (m->ntie)
+		c = crc_add(c, m->tie, 2 * m->ntie * sizeof *m->tie);
 	h->mesh_crc = (uint32_t)c;
 	double mp[7] = { a->E, a->nu, a->rho, (double)a->flags, (double)a->nhard, a->rate_m, a->rate_ref };
 	c = crc_add(crc32(0, Z_NULL, 0), mp, sizeof mp);

@@ -16,6 +16,11 @@
  *                    / (2 + alpha dt_{n+1}),  F = F_ex - F_in;
  *      a constrained degree of freedom (mesh->fix) keeps the velocity it
  *      has in dem_fe_velocity(): zero unless the caller prescribes one;
+ *      periodic ties (mesh->tie): each tied set of nodes is one set of
+ *      degrees of freedom, its master's: the slaves' masses and forces
+ *      are the master's, and after this step a slave takes the master's
+ *      velocity and its position plus the reference offset (the period);
+ *      dem_fe_mass() gives a slave the mass of its set;
  *   3. coordinates x_{n+1} = x_n + dt_{n+1} v_{n+1/2} (Eq. 1.7);
  *   4. the elements on x_{n+1} (large strain) or on the reference
  *      coordinates (small strain): rate of deformation from v_{n+1/2},
@@ -203,7 +208,8 @@ const double *dem_fe_coords(const dem_fe_t *fe);
  * step (a prescribed motion). */
 double *dem_fe_velocity(dem_fe_t *fe);
 
-/* Lumped nodal masses (kg), one per node. */
+/* Lumped nodal masses (kg), one per node (of a periodic slave or master:
+ * the mass of its tied set). */
 const double *dem_fe_mass(const dem_fe_t *fe);
 
 /* Node displacements u = x - X, 3 per node. */

@@ -300,7 +300,8 @@ out:
 
 int dem_scene_block(dem_scene_t *s, dem_mesh_t *m, dem_error_t *e)
 {
-	static const char *const bcs[] = {"free", "fixed", "normal", NULL};
+	static const char *const bcs[] = {"free", "fixed", "normal",
+		"periodic", NULL};
 	static const char *const face_key[6] = {
 		"block.bc.xmin", "block.bc.xmax", "block.bc.ymin",
 		"block.bc.ymax", "block.bc.bottom", "block.bc.top"
@@ -359,6 +360,23 @@ int dem_scene_block(dem_scene_t *s, dem_mesh_t *m, dem_error_t *e)
 			return rc;
 		bc[f] = (dem_bc_t)v;
 	}
+	/* a periodic side needs its partner periodic too; the top and bottom
+	 * have none */
+	for (f = 0; f < 6; f++) {
+		int p = f ^ 1;
+
+		if (bc[f] != DEM_BC_PERIODIC)
+			continue;
+		if (f >= DEM_ZMIN)
+			return dem_scene_error(s, face_key[f], e, "the %s "
+					       "cannot be periodic (only the "
+					       "x and y side pairs)",
+					       f == DEM_ZMIN ? "bottom" : "top");
+		if (bc[p] != DEM_BC_PERIODIC)
+			return dem_scene_error(s, face_key[f], e, "periodic "
+					       "needs %s periodic too",
+					       face_key[p]);
+	}
 	if (dem_mesh_box(m, ax, e)) {
 		char msg[sizeof e->msg];
 
@@ -367,5 +385,10 @@ int dem_scene_block(dem_scene_t *s, dem_mesh_t *m, dem_error_t *e)
 		return dem_scene_error(s, "block", e, "%s", msg);
 	}
 	dem_mesh_set_bc(m, bc);
+	if ((rc = dem_mesh_set_periodic(m, bc[DEM_XMIN] == DEM_BC_PERIODIC,
+					bc[DEM_YMIN] == DEM_BC_PERIODIC, e))) {
+		dem_mesh_free(m);
+		return rc;
+	}
 	return DEM_OK;
 }

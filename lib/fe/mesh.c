@@ -120,7 +120,7 @@ int dem_axis_grid(const dem_axis_t *a, double **g, int *n, dem_error_t *e)
 void dem_mesh_free(dem_mesh_t *m)
 {
 	free(m->gx), free(m->gy), free(m->gz);
-	free(m->X), free(m->hex), free(m->fix);
+	free(m->X), free(m->hex), free(m->fix), free(m->tie);
 	memset(m, 0, sizeof *m);
 }
 
@@ -200,12 +200,46 @@ void dem_mesh_set_bc(dem_mesh_t *m, const dem_bc_t bc[6])
 				uint8_t b = 0;
 
 				for (f = 0; f < 6; f++) {
-					if (!on[f] || bc[f] == DEM_BC_FREE)
+					if (!on[f] || bc[f] == DEM_BC_FREE ||
+					    bc[f] == DEM_BC_PERIODIC)
 						continue;
 					b |= bc[f] == DEM_BC_FIXED ? all : normal[f / 2];
 				}
 				m->fix[dem_mesh_node(m, i, j, k)] = b;
 			}
+}
+
+int dem_mesh_set_periodic(dem_mesh_t *m, int px, int py, dem_error_t *e)
+{
+	size_t n = 0;
+	int i, j, k;
+
+	free(m->tie);
+	m->tie = NULL;
+	m->ntie = 0;
+	if (!px && !py)
+		return DEM_OK;
+	/* at most one face of nodes per pair, the corner line counted twice */
+	m->tie = malloc(2 * (size_t)(m->nz + 1) *
+			((size_t)(m->nx + 1) + (size_t)(m->ny + 1)) * sizeof *m->tie);
+	if (!m->tie)
+		return dem_error_nomem(e, "periodic ties");
+	for (k = 0; k <= m->nz; k++)
+		for (j = 0; j <= m->ny; j++)
+			for (i = 0; i <= m->nx; i++) {
+				/* the master straight away, not through another
+				 * slave: (nx, ny) goes to (0, 0) */
+				int im = px && i == m->nx ? 0 : i;
+				int jm = py && j == m->ny ? 0 : j;
+
+				if (im == i && jm == j)
+					continue;
+				m->tie[2 * n] = (uint32_t)dem_mesh_node(m, i, j, k);
+				m->tie[2 * n + 1] = (uint32_t)dem_mesh_node(m, im, jm, k);
+				n++;
+			}
+	m->ntie = n;
+	return DEM_OK;
 }
 
 void dem_mesh_gather(const dem_mesh_t *m, size_t el, const double *u, double x[24])

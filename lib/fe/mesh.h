@@ -16,7 +16,14 @@
  *
  * Boundary conditions by face: each of the six faces is free, fixed (all
  * three displacements zero) or fixed in its normal direction (a roller).  A
- * node on several faces takes the union of their constraints.
+ * node on several faces takes the union of their constraints.  The x and y
+ * side pairs may instead be periodic (dem_mesh_set_periodic): each node of
+ * the xmax face is tied to the node of the xmin face with the same j, k,
+ * and each node of ymax to its ymin partner, a corner to the one node of
+ * the (xmin, ymin) edge, so that every tied set has one master.  The block
+ * then stands for one cell of a surface peened all over the same way (a
+ * point of a large plate), with no mean in-plane strain: a slave's
+ * displacement is its master's.
  */
 #ifndef DEM_FE_MESH_H
 #define DEM_FE_MESH_H
@@ -43,7 +50,7 @@ typedef struct dem_axis {
 int dem_axis_grid(const dem_axis_t *a, double **g, int *n, dem_error_t *e);
 
 enum dem_face { DEM_XMIN, DEM_XMAX, DEM_YMIN, DEM_YMAX, DEM_ZMIN, DEM_ZMAX };
-typedef enum dem_bc { DEM_BC_FREE = 0, DEM_BC_FIXED, DEM_BC_NORMAL } dem_bc_t;
+typedef enum dem_bc { DEM_BC_FREE = 0, DEM_BC_FIXED, DEM_BC_NORMAL, DEM_BC_PERIODIC } dem_bc_t;
 
 /* Node constraint bits */
 #define DEM_FIX_X 1u
@@ -57,6 +64,8 @@ typedef struct dem_mesh {
 	double *X;               /* reference coordinates, 3 per node (x, y, z) */
 	uint32_t *hex;           /* 8 node numbers per element */
 	uint8_t *fix;            /* DEM_FIX_* bits per node */
+	size_t ntie;             /* periodic ties (0: none) */
+	uint32_t *tie;           /* 2 per tie: the slave node, then its master */
 } dem_mesh_t;
 
 /* Build the mesh of the box given by three axes.  DEM_EINPUT for a bad
@@ -65,8 +74,14 @@ int dem_mesh_box(dem_mesh_t *m, const dem_axis_t ax[3], dem_error_t *e);
 void dem_mesh_free(dem_mesh_t *m);
 
 /* Set the node constraints from the six faces' conditions (indexed by enum
- * dem_face); clears earlier ones. */
+ * dem_face); clears earlier ones.  A periodic face constrains nothing here:
+ * its ties are dem_mesh_set_periodic's. */
 void dem_mesh_set_bc(dem_mesh_t *m, const dem_bc_t bc[6]);
+
+/* Tie the xmax face to the xmin face (px) and the ymax face to the ymin
+ * face (py), replacing earlier ties (px = py = 0: none).  A slave is never
+ * a master.  DEM_EIO when out of memory. */
+int dem_mesh_set_periodic(dem_mesh_t *m, int px, int py, dem_error_t *e);
 
 /* Node and element numbers from grid indices. */
 static inline size_t dem_mesh_node(const dem_mesh_t *m, int i, int j, int k)
