@@ -12,19 +12,21 @@ echo
 echo "## Cost per element-cycle (law-bench, every element flowing)"
 echo
 awk -F'\t' 'NR == 1 { next }
-	{ k = $1 "/" $2; ns[k] = $7; mn[k] = $8; mx[k] = $9; cpu[k] = $10; pf[k] = $11
+	{ k = $1 "/" $2; w[k] = $7; mn[k] = $8; mx[k] = $9; ns[k] = $10; pf[k] = $11
 	  if (!($1 in seen)) { seen[$1] = 1; order[++n] = $1 } ne = $4; thr = $3 }
 	END {
-		printf "Block of %d elements, %d thread(s); median of the repeats (fastest-slowest), ns per\n", ne, thr
-		printf "element-cycle, and against the linear law in the same run. \"plastic\" is the share\n"
-		printf "of the points that flowed: the timing is the worst case, every point returning at every step.\n\n"
-		printf "| law | one-point ns | vs linear | full ns | vs linear | plastic share |\n"
-		printf "|---|---:|---:|---:|---:|---:|\n"
+		printf "Block of %d elements, %d thread(s).  Median process CPU time per element-cycle\n", ne, thr
+		printf "(ns) over the repeats, and against the linear law in the same run; the wall clock\n"
+		printf "of the one-point runs (median, fastest-slowest) shows the machine'"'"'s noise.  \"plastic\"\n"
+		printf "is the share of the points that flowed: the worst case, every point returning at\n"
+		printf "every step (in a peening run only the points under a shot flow at a time).\n\n"
+		printf "| law | one-point CPU ns | vs linear | full CPU ns | vs linear | one-point wall ns | plastic share |\n"
+		printf "|---|---:|---:|---:|---:|---:|---:|\n"
 		for (i = 1; i <= n; i++) {
 			l = order[i]; a = l "/1pt"; b = l "/full"
-			printf "| %s | %.1f (%.1f-%.1f) | %.2f | %.1f (%.1f-%.1f) | %.2f | %.2f |\n", l,
-				ns[a], mn[a], mx[a], ns[a] / ns["linear/1pt"],
-				ns[b], mn[b], mx[b], ns[b] / ns["linear/full"], pf[a]
+			printf "| %s | %.1f | %.2f | %.1f | %.2f | %.1f (%.1f-%.1f) | %.2f |\n", l,
+				ns[a], ns[a] / ns["linear/1pt"], ns[b], ns[b] / ns["linear/full"],
+				w[a], mn[a], mx[a], pf[a]
 		}
 	}' "$out/laws.tsv"
 echo
@@ -32,10 +34,14 @@ echo "## The linear law before and after (examples/cost/fe-bench.c, alternating 
 echo
 echo "fe-bench built on the code before the laws and on this checkout, run one after"
 echo "the other in rounds (block 40 x 40 x 25, 1 thread); ns per element-cycle, the"
-echo "median over the rounds of each round's median."
+echo "median over the rounds of each round's median: wall clock, and process CPU time"
+echo "(the steadier of the two on a loaded machine)."
 echo
-awk -F'\t' 'NR == 1 { next }
-	{ k = $1 SUBSEP $3; v[k, ++c[k]] = $11; cfg[$3] = 1 }
+for col in 11 14; do
+[ "$col" = 11 ] && echo "Wall clock:" || echo "CPU time:"
+echo
+awk -F'\t' -v col="$col" 'NR == 1 { next }
+	{ k = $1 SUBSEP $3; v[k, ++c[k]] = $col; cfg[$3] = 1 }
 	function med(k,   i, j, t, n, a) {
 		n = c[k]
 		for (i = 1; i <= n; i++) a[i] = v[k, i]
@@ -49,6 +55,8 @@ awk -F'\t' 'NR == 1 { next }
 			printf "| %s | %.1f | %.1f | %.3f | %d |\n", f, b, a, a / b, c["this" SUBSEP f]
 		}
 	}' "$out/baseline.tsv"
+echo
+done
 echo
 echo "## One shot, one-point against full integration (impact.sh)"
 echo

@@ -1008,36 +1008,18 @@ int dem_mat_update_tangent(const dem_mat_t *m, const double deps[6], double dt,
 	double dg = (m->flags & DEM_MAT_RATE) && dt > 0
 		? return_map_rate(m, *ep, q, dt, &hs)
 		: return_map(m, *ep, q, &hs);
-	double G = m->G, G3 = 3 * G;
-	double qn = q - G3 * dg;
+	double qn = q - 3 * m->G * dg;
 	scale_back(sig, s, p, qn / q);
 	*ep += dg;
 	*wp = dg * qn;
-
-	/* Simo & Taylor (1985), consistent tangent of the radial return:
-	 *   D = K 1(x)1 + 2G beta I_dev - 2G gbar n(x)n,
-	 *   beta = 1 - 3G dg/q_trial,  gbar = 3G/(3G + H') - 3G dg/q_trial,
-	 * n = s/|s| the unit flow direction, H' the slope of the flow stress
-	 * along the return (hardening, and rate when present).  In Voigt form
-	 * with engineering shears I_dev has 1/2 on the shear diagonal and the
-	 * n(x)n block is n_i n_j with n in tensor components. */
-	double beta = 1 - G3 * dg / q;
-	double gbar = G3 / (G3 + hs) - G3 * dg / q;
-	double snorm = sqrt(2 * q2 / 3);   /* |s| */
-	double n[6];
+	/* the tangent of Simo & Taylor (1985): tangent_general's without
+	 * back-stresses, the flow direction that of the trial deviator and
+	 * H' the slope of the flow stress along the return (hardening, and
+	 * rate when present) */
+	gret_t g = { .x = dg, .xn = sqrt(2 * q2 / 3), .hp = hs };
 	for (int i = 0; i < 6; i++)
-		n[i] = s[i] / snorm;
-	double K = m->K;
-	for (int i = 0; i < 6; i++)
-		for (int j = 0; j < 6; j++) {
-			double idev;
-			if (i < 3 && j < 3)
-				idev = (i == j ? 1.0 : 0.0) - 1.0 / 3;
-			else
-				idev = i == j ? 0.5 : 0.0;
-			D[6 * i + j] = (i < 3 && j < 3 ? K : 0) + 2 * G * beta * idev -
-				       2 * G * gbar * n[i] * n[j];
-		}
+		g.n[i] = s[i] / g.xn;
+	tangent_general(m, &g, D);
 	return 1;
 }
 
