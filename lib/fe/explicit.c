@@ -1216,7 +1216,7 @@ static int ckpt_items(const dem_fe_t *cfe, ckpt_item_t *it)
 	ITEM("sig", fe->sig, (full ? ne * 2 * 6 * NB : 6 * nl) * d);
 	ITEM("ep", fe->ep, (full ? ne * 2 * NB : nl) * d);
 	if (fe->kin)
-		ITEM("kin", fe->kin, (full ? ne * 2 : nl) * (size_t)fe->nh * NB * d);
+		ITEM("kin", fe->kin, (full ? ne * 2 * NB : nl) * (size_t)fe->nh * d);
 	if (fe->Qs)
 		ITEM("Qs", fe->Qs, 12 * nl * d);
 	if (fe->eps)

@@ -76,13 +76,29 @@ static void snapshot(const dem_fe_t *fe, const dem_mesh_t *m, double *buf)
 	dem_fe_fields(fe, buf + 6 * m->nn, buf + 6 * m->nn + 6 * m->ne, buf + 6 * m->nn + 12 * m->ne);
 }
 
-static void resume_case(dem_fe_rule_t rule, int large)
+/* The combined law: Voce with two back-stresses and a rate law, whose
+ * back-stresses are state the checkpoint must carry. */
+static void alu_kin(dem_mat_t *m)
+{
+	dem_mat_param_t p = { .E = 68e9, .nu = 0.33, .rho = 2700, .law = DEM_LAW_VOCE,
+			      .sy0 = 157e6, .voce_Q = 60e6, .voce_b = 20, .nkin = 2,
+			      .kin_C = { 20e9, 1e9 }, .kin_gamma = { 300, 10 },
+			      .rate_law = DEM_RATE_JC, .jc_C = 0.01, .rate_ref = 1 };
+	dem_error_t e = { 0 };
+	assert_int_equal(dem_mat_init(m, &p, &e), DEM_OK);
+	assert_int_equal(dem_mat_nhist(m), 12);
+}
+
+static void resume_case(dem_fe_rule_t rule, int large, int kin)
 {
 	dem_mesh_t m = { 0 };
 	dem_mat_t mat = { 0 };
 	dem_error_t e = { 0 };
 	box(&m, 6, 6, 3);
-	alu(&mat, 157e6);
+	if (kin)
+		alu_kin(&mat);
+	else
+		alu(&mat, 157e6);
 	size_t n = 6 * m.nn + 13 * m.ne;
 	double *a = malloc(n * sizeof *a), *b = malloc(n * sizeof *b);
 	assert_non_null(a);
@@ -125,25 +141,34 @@ static void resume_case(dem_fe_rule_t rule, int large)
 static void test_resume_1pt_small(void **state)
 {
 	(void)state;
-	resume_case(DEM_FE_1PT, 0);
+	resume_case(DEM_FE_1PT, 0, 0);
 }
 
 static void test_resume_1pt_large(void **state)
 {
 	(void)state;
-	resume_case(DEM_FE_1PT, 1);
+	resume_case(DEM_FE_1PT, 1, 0);
 }
 
 static void test_resume_full_small(void **state)
 {
 	(void)state;
-	resume_case(DEM_FE_FULL, 0);
+	resume_case(DEM_FE_FULL, 0, 0);
 }
 
 static void test_resume_full_large(void **state)
 {
 	(void)state;
-	resume_case(DEM_FE_FULL, 1);
+	resume_case(DEM_FE_FULL, 1, 0);
+}
+
+/* With back-stresses: the checkpoint carries them (a resumed run that
+ * started them from zero would part from the straight one). */
+static void test_resume_kin(void **state)
+{
+	(void)state;
+	resume_case(DEM_FE_1PT, 1, 1);
+	resume_case(DEM_FE_FULL, 1, 1);
 }
 
 /* The checkpoint of model A loaded into B: the error code and message. */
@@ -241,6 +266,7 @@ int main(void)
 		cmocka_unit_test(test_resume_1pt_large),
 		cmocka_unit_test(test_resume_full_small),
 		cmocka_unit_test(test_resume_full_large),
+		cmocka_unit_test(test_resume_kin),
 		cmocka_unit_test(test_refused),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
