@@ -1,0 +1,55 @@
+#!/bin/sh
+# laws-report.sh "LAWS" - REPORT-laws.md of `make laws`: the quick preset
+# to 32 passes with each library law (out-laws/LAW/vV/passes.txt, pass p
+# is exposure n = p + 1) beside the linear law of the thesis on the same
+# preset (REPORT-long.md's table, from `make long`: the linear law's code
+# path is unchanged since) and the thesis's computed 2.2 / 2.45 mm after 32
+# passes (Ch. 8.6.2).  Per law and velocity: h(8), h(16), h(32), the
+# change from 16 to 32 (the thesis's saturation test: within 10 %), the
+# J443 rule on the points (the earliest n with h(2n) <= 1.1 h(n)), the
+# surface sxx and ep after the last pass, demshot's time.
+set -eu
+laws=$1
+vels="36 46.5"
+echo "# airbus-strip: the material laws (quick preset, 32 passes)"
+echo
+echo "Written by \`make laws\` (laws-report.sh) on $(date '+%F') ($(nproc) cores, load average at"
+echo "the end $(cut -d' ' -f1-3 /proc/loadavg)).  The quick preset (quick.yaml: 0.1 mm elements,"
+echo "demshot --accuracy coarse) run to 32 passes with the material section taken from the"
+echo "library (share/materials); the linear row is the same preset with the thesis's law"
+echo "(REPORT-long.md).  Thesis (Ch. 8.6.2, its own model, 0.05 mm elements): 2.2 mm (36 m/s)"
+echo "and 2.45 mm (46.5 m/s) after 32 passes, saturated by pass 16."
+echo
+echo "| law | v (m/s) | h(8) mm | h(16) | h(32) | 16 to 32 | saturated (16-32 within 10 %) | J443 point n (h(2n)/h(n)) | surface sxx (MPa) | demshot s |"
+echo "|---|---|---:|---:|---:|---:|---|---|---:|---:|"
+for v in $vels; do
+	col=$([ "$v" = 36 ] && echo 2 || echo 4)
+	awk -F'|' -v c="$col" '/^\| [0-9]+ \|/ { n = $2 + 0; if (n <= 32) print n - 1, 0, $(c + 1) + 0 }' REPORT-long.md \
+		> "/tmp/laws-linear-$$-$v.txt"
+done
+row() {   # law v passes-file saturation-file demshot-log
+	awk -v law="$1" -v v="$2" -v sat="$4" -v lg="$5" '
+		FILENAME == sat && !/^#/ { s = $2; e = $0 }
+		FILENAME == lg && /^demshot: cost: / { for (i = 3; i <= NF; i++) { split($i, kv, "="); if (kv[1] == "wall_s") w = kv[2] } }
+		FILENAME != sat && FILENAME != lg && !/^#/ { n = $1 + 1; h[n] = $3; N = n }
+		END {
+			for (n = 1; 2 * n <= N; n++) if (h[n] > 0 && h[2 * n] <= 1.1 * h[n]) { p = n; break }
+			j = p ? sprintf("%d (%.3f)", p, h[2 * p] / h[p]) : "none within " N
+			d = h[16] > 0 ? 100 * (h[32] / h[16] - 1) : 0
+			printf "| %s | %s | %.3f | %.3f | %.3f | %+.1f %% | %s | %s | %s | %s |\n", law, v,
+				h[8], h[16], h[32], d, (d <= 10 && d >= -10) ? "yes" : "no", j,
+				s != "" ? sprintf("%.0f", s / 1e6) : "-", w != "" ? w : "-"
+		}' "$3" ${4:+"$4"} ${5:+"$5"}
+}
+for v in $vels; do
+	row "linear (thesis, REPORT-long.md)" "$v" "/tmp/laws-linear-$$-$v.txt" "" ""
+	for l in $laws; do
+		d=out-laws/$l/v$v
+		[ -f "$d/passes.txt" ] || { echo "| $l | $v | (not run) ||||||||"; continue; }
+		row "$l" "$v" "$d/passes.txt" "$d/saturation.txt" "$d/demshot.log"
+	done
+done
+rm -f /tmp/laws-linear-$$-*.txt
+echo
+echo "Surface sxx: the saturation table's surface value after the last pass (demprofile)."
+echo "The laws and their sources: share/materials/LAW.yaml and share/README.md."
