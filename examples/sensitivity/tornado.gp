@@ -21,5 +21,7 @@ set key outside right top
 set style fill solid 0.8 border -1
 nv = words(vels)
 bw = 0.8 / nv
-plot for [i=1:nv] data using (0.5 * column(i + 1)):($0 - 0.4 + (i - 0.5) * bw):(0.5 * abs(column(i + 1))):(bw / 2):ytic(1) \
+# the labels once a row, at its centre; then one bar a velocity
+plot data using (0):($0):ytic(1) with points pt -1 notitle, \
+     for [i=1:nv] data using (0.5 * column(i + 1)):($0 - 0.4 + (i - 0.5) * bw):(0.5 * abs(column(i + 1))):(bw / 2) \
      with boxxyerror lc i title sprintf("v = %s m/s", word(vels, i))
