@@ -55,6 +55,8 @@ size12) group=sample; choice="block size"; value="12 x 12 x 4 mm"
 	sub '  size: \[8 mm, 8 mm, 4 mm\]' '  size: [12 mm, 12 mm, 4 mm]' ;;
 depth2) group=sample; choice="block size"; value="8 x 8 x 2 mm"
 	sub '  size: \[8 mm, 8 mm, 4 mm\]' '  size: [8 mm, 8 mm, 2 mm]' ;;
+depth8) group=sample; choice="block size"; value="8 x 8 x 8 mm"
+	sub '  size: \[8 mm, 8 mm, 4 mm\]' '  size: [8 mm, 8 mm, 8 mm]' ;;
 # damping (Ch. 7.5: 0.05 "global damping") and the end of a pass
 damp0) group=damping; choice="damping ratio"; value="0"; shot="--damping 0" ;;
 damp02) group=damping; choice="damping ratio"; value="0.2"; shot="--damping 0.2" ;;
