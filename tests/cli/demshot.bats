@@ -141,6 +141,25 @@ YAML
 	[[ $stderr == *"no face of the top"* ]]
 }
 
+@test "demshot: periodic sides run; a periodic side without its partner, or a periodic bottom, is bad input" {
+	printf '  bc: {xmin: periodic, xmax: periodic, ymin: periodic, ymax: periodic}\n' > "$T/bc"
+	sed '/^  ratio:/r '"$T/bc" "$T/pulse.yaml" > "$T/per.yaml"
+	run --separate-stderr demshot -s "$T/per.yaml" -o "$T/per.state"
+	echo "$stderr"
+	[ "$status" -eq 0 ]
+	[ -s "$T/per.state" ]
+	sed 's/xmax: periodic/xmax: normal/' "$T/per.yaml" > "$T/half.yaml"
+	run --separate-stderr demshot -s "$T/half.yaml" -o "$T/half.state"
+	echo "$stderr"
+	[ "$status" -eq 1 ]
+	[[ $stderr == *"block.bc.xmin: periodic needs block.bc.xmax periodic too"* ]]
+	[ ! -e "$T/half.state" ]
+	sed 's/ymax: periodic}/ymax: periodic, bottom: periodic}/' "$T/per.yaml" > "$T/bot.yaml"
+	run --separate-stderr demshot -s "$T/bot.yaml"
+	[ "$status" -eq 1 ]
+	[[ $stderr == *"block.bc.bottom: the bottom cannot be periodic"* ]]
+}
+
 @test "demshot: usage errors exit 2" {
 	usage_error demshot -s "$T/pulse.yaml" --rule twopoint
 	usage_error demshot -s "$T/pulse.yaml" --threads 0
