@@ -26,21 +26,8 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "core/cost.h"
-#include "fe/explicit.h"
 #include "fe/material.h"
-#include "fe/mesh.h"
-
-static int cmp(const void *a, const void *b)
-{
-	double x = *(const double *)a, y = *(const double *)b;
-	return (x > y) - (x < y);
-}
-
-static double median(const double *t, int n)
-{
-	return n % 2 ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]);
-}
+#include "fe-block.h"
 
 static void die(const char *msg)
 {
@@ -91,21 +78,11 @@ int main(int argc, char **argv)
 	if (steps < 1 || reps < 1 || warm < 0 || reps > 99)
 		die("bad -s, -r or -w");
 
-	const double h = 1e-4, rate = 1e4;
-	dem_axis_t ax[3];
-	double len[3];
-	for (int a = 0; a < 3; a++) {
-		len[a] = n[a] * h;
-		double lo = a < 2 ? -len[a] / 2 : -len[a];
-		ax[a] = (dem_axis_t){ lo, lo + len[a], lo, lo + len[a], h, 1, 0 };
-	}
 	dem_mesh_t m;
+	double len[3];
 	dem_error_t e = { 0 };
-	if (dem_mesh_box(&m, ax, &e))
+	if (fe_block_mesh(n, &m, len, &e))
 		die(e.msg);
-	/* bottom on rollers, top driven in z, sides free */
-	dem_bc_t bc[6] = { DEM_BC_FREE, DEM_BC_FREE, DEM_BC_FREE, DEM_BC_FREE, DEM_BC_NORMAL, DEM_BC_NORMAL };
-	dem_mesh_set_bc(&m, bc);
 
 	dem_mat_param_t pe = { .E = 68e9, .nu = 0.33, .rho = 2700 }, pp = pe;
 	pp.sy0 = 157e6;
@@ -134,39 +111,13 @@ int main(int argc, char **argv)
 					dem_fe_t *fe;
 					if (dem_fe_create(&fe, &m, &mat[pl], &o, &e))
 						die(e.msg);
-					double *v = dem_fe_velocity(fe);
-					for (size_t i = 0; i < m.nn; i++) {
-						const double *X = m.X + 3 * i;
-						v[3 * i] = 0.5 * rate * X[0];
-						v[3 * i + 1] = 0.5 * rate * X[1];
-						v[3 * i + 2] = -rate * (X[2] + len[2]);
-					}
-					for (int s = 0; s < warm; s++)
-						if (dem_fe_step(fe, 0, &e))
-							die(e.msg);
-					dem_fe_stats_t s0, s1;
-					dem_fe_stats(fe, &s0);
-					double t[100], tc[100];
-					for (int r = 0; r < reps; r++) {
-						double w0 = dem_wall(), c0 = dem_cpu();
-						for (int s = 0; s < steps; s++)
-							if (dem_fe_step(fe, 0, &e))
-								die(e.msg);
-						double ec = (double)steps * (double)m.ne;
-						t[r] = (dem_wall() - w0) / ec * 1e9;
-						tc[r] = (dem_cpu() - c0) / ec * 1e9;
-					}
-					dem_fe_stats(fe, &s1);
-					qsort(t, (size_t)reps, sizeof *t, cmp);
-					qsort(tc, (size_t)reps, sizeof *tc, cmp);
-					double med = median(t, reps), medc = median(tc, reps);
-					double pf = (s1.plastic_updates - s0.plastic_updates) /
-						    ((s1.elem_cycles - s0.elem_cycles) * (rule ? 8 : 1));
-					double es = (s1.elem_s - s0.elem_s) /
-						    ((s1.elem_s - s0.elem_s) + (s1.node_s - s0.node_s));
+					fe_block_motion(fe, &m, len);
+					fe_block_time_t r;
+					if (fe_block_time(fe, m.ne, rule ? 8 : 1, warm, steps, reps, &r, &e))
+						die(e.msg);
 					printf("%s\t%s\t%s\t%s\t%d\t%zu\t%d\t%d\t%.1f\t%.1f\t%.1f\t%.1f\t%.3f\t%.3f\n", name,
-					       rname[rule], sname[large], mname[pl], thr[ti], m.ne, steps, reps, med,
-					       t[0], t[reps - 1], medc, pf, es);
+					       rname[rule], sname[large], mname[pl], thr[ti], m.ne, steps, reps, r.med,
+					       r.min, r.max, r.cpu, r.plastic, r.elem_share);
 					fflush(stdout);
 					dem_fe_free(fe);
 				}

@@ -5,8 +5,9 @@
  *   law-bench [-n NX,NY,NZ] [-s STEPS] [-r REPS] [-w WARMUP] [-t THREADS]
  *             [-c CONFIG,...]
  *
- * The block and its motion are those of examples/cost/fe-bench.c: NX x NY
- * x NZ elements (default 40 x 40 x 25 = 40 000) of 0.1 mm, homogeneous
+ * The block, its motion and the timing loop are examples/cost/fe-block.h's,
+ * shared with fe-bench.c: NX x NY x NZ elements (default 40 x 40 x 25 =
+ * 40 000) of 0.1 mm, homogeneous
  * isochoric compression at 10^4 /s, so that every element yields after a
  * few steps and keeps flowing: each plastic law is timed where its return
  * runs in every element at every step (the worst case; in a peening run a
@@ -23,21 +24,8 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "core/cost.h"
-#include "fe/explicit.h"
 #include "fe/material.h"
-#include "fe/mesh.h"
-
-static int cmp(const void *a, const void *b)
-{
-	double x = *(const double *)a, y = *(const double *)b;
-	return (x > y) - (x < y);
-}
-
-static double median(const double *t, int n)
-{
-	return n % 2 ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]);
-}
+#include "fe-block.h"     /* examples/cost: the block and the timing loop */
 
 static void die(const char *msg)
 {
@@ -130,20 +118,11 @@ int main(int argc, char **argv)
 	laws[nl].name = "voce+3kin+jc-rate";
 	laws[nl].p.rate_law = DEM_RATE_JC, laws[nl].p.jc_C = 0.01, laws[nl++].p.rate_ref = 1;
 
-	const double h = 1e-4, rate = 1e4;
-	dem_axis_t ax[3];
-	double len[3];
-	for (int a = 0; a < 3; a++) {
-		len[a] = n[a] * h;
-		double lo = a < 2 ? -len[a] / 2 : -len[a];
-		ax[a] = (dem_axis_t){ lo, lo + len[a], lo, lo + len[a], h, 1, 0 };
-	}
 	dem_mesh_t m;
+	double len[3];
 	dem_error_t e = { 0 };
-	if (dem_mesh_box(&m, ax, &e))
+	if (fe_block_mesh(n, &m, len, &e))
 		die(e.msg);
-	dem_bc_t bc[6] = { DEM_BC_FREE, DEM_BC_FREE, DEM_BC_FREE, DEM_BC_FREE, DEM_BC_NORMAL, DEM_BC_NORMAL };
-	dem_mesh_set_bc(&m, bc);
 
 	static const char *rname[2] = { "1pt", "full" };
 	printf("law\trule\tthreads\tne\tsteps\treps\tns_median\tns_min\tns_max\tcpu_ns_median\tplastic_frac\n");
@@ -164,36 +143,12 @@ int main(int argc, char **argv)
 			dem_fe_t *fe;
 			if (dem_fe_create(&fe, &m, &mat, &o, &e))
 				die(e.msg);
-			double *v = dem_fe_velocity(fe);
-			for (size_t i = 0; i < m.nn; i++) {
-				const double *X = m.X + 3 * i;
-				v[3 * i] = 0.5 * rate * X[0];
-				v[3 * i + 1] = 0.5 * rate * X[1];
-				v[3 * i + 2] = -rate * (X[2] + len[2]);
-			}
-			for (int s = 0; s < warm; s++)
-				if (dem_fe_step(fe, 0, &e))
-					die(e.msg);
-			dem_fe_stats_t s0, s1;
-			dem_fe_stats(fe, &s0);
-			double t[100], tc[100];
-			for (int r = 0; r < reps; r++) {
-				double w0 = dem_wall(), c0 = dem_cpu();
-				for (int s = 0; s < steps; s++)
-					if (dem_fe_step(fe, 0, &e))
-						die(e.msg);
-				double ec = (double)steps * (double)m.ne;
-				t[r] = (dem_wall() - w0) / ec * 1e9;
-				tc[r] = (dem_cpu() - c0) / ec * 1e9;
-			}
-			dem_fe_stats(fe, &s1);
-			qsort(t, (size_t)reps, sizeof *t, cmp);
-			qsort(tc, (size_t)reps, sizeof *tc, cmp);
-			double pf = (s1.plastic_updates - s0.plastic_updates) /
-				    ((s1.elem_cycles - s0.elem_cycles) * (rule ? 8 : 1));
+			fe_block_motion(fe, &m, len);
+			fe_block_time_t r;
+			if (fe_block_time(fe, m.ne, rule ? 8 : 1, warm, steps, reps, &r, &e))
+				die(e.msg);
 			printf("%s\t%s\t%d\t%zu\t%d\t%d\t%.1f\t%.1f\t%.1f\t%.1f\t%.3f\n", laws[k].name,
-			       rname[rule], thr, m.ne, steps, reps, median(t, reps), t[0], t[reps - 1],
-			       median(tc, reps), pf);
+			       rname[rule], thr, m.ne, steps, reps, r.med, r.min, r.max, r.cpu, r.plastic);
 			fflush(stdout);
 			dem_fe_free(fe);
 			dem_mat_free(&mat);
