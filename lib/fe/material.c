@@ -94,9 +94,9 @@ static int check_law(const dem_mat_param_t *p, dem_mat_law_t law, dem_error_t *e
 	return DEM_OK;
 }
 
-static int check_rate(const dem_mat_param_t *p, dem_error_t *e)
+static int check_rate(const dem_mat_param_t *p, dem_mat_rate_law_t rl, dem_error_t *e)
 {
-	switch (p->rate_law) {
+	switch (rl) {
 	case DEM_RATE_NONE:
 		return DEM_OK;
 	case DEM_RATE_POWER:
@@ -114,7 +114,7 @@ static int check_rate(const dem_mat_param_t *p, dem_error_t *e)
 			return bad(e, "the Johnson-Cook rate constant C", p->jc_C, "positive");
 		break;
 	default:
-		return dem_error_set(e, DEM_EINPUT, "material: unknown rate law %d", (int)p->rate_law);
+		return dem_error_set(e, DEM_EINPUT, "material: unknown rate law %d", (int)rl);
 	}
 	/* power and Johnson-Cook: the reference rate is part of the law */
 	if (!(p->rate_ref > 0) || !isfinite(p->rate_ref))
@@ -165,14 +165,16 @@ int dem_mat_init(dem_mat_t *m, const dem_mat_param_t *p, dem_error_t *e)
 		return bad(e, "the yield stress", p->sy0, "positive");
 	if (law == DEM_LAW_TABLE && p->nhard < 1)
 		return dem_error_set(e, DEM_EINPUT, "material: the table law needs a hardening table");
+	/* the old form of the power law: an exponent with no law named */
+	dem_mat_rate_law_t rl = p->rate_law == DEM_RATE_NONE && p->rate_m > 0 ? DEM_RATE_POWER : p->rate_law;
 	if (law == DEM_LAW_AUTO) {
-		if (p->rate_law != DEM_RATE_NONE || p->rate_m > 0)
+		if (rl != DEM_RATE_NONE)
 			return dem_error_set(e, DEM_EINPUT, "material: a rate law needs a yield stress");
 		if (p->nkin > 0)
 			return dem_error_set(e, DEM_EINPUT, "material: back-stresses need a yield stress");
 		return DEM_OK;  /* elastic */
 	}
-	if ((rc = check_law(p, law, e)) || (rc = check_rate(p, e)))
+	if ((rc = check_law(p, law, e)) || (rc = check_rate(p, rl, e)))
 		return rc;
 
 	int n = law == DEM_LAW_TABLE ? p->nhard : 1;
@@ -235,17 +237,7 @@ int dem_mat_init(dem_mat_t *m, const dem_mat_param_t *p, dem_error_t *e)
 	if (n == 1)
 		m->tratio = m->hsl[0] > 0 ? m->hsl[0] / (3 * m->G + m->hsl[0]) : 0;
 	m->flags = DEM_MAT_PLASTIC;
-	/* the old form of the power law: an exponent with no law named */
-	dem_mat_rate_law_t rl = p->rate_law == DEM_RATE_NONE && p->rate_m > 0 ? DEM_RATE_POWER : p->rate_law;
 	if (rl != DEM_RATE_NONE) {
-		if (rl == DEM_RATE_POWER && p->rate_law == DEM_RATE_NONE) {
-			dem_mat_param_t q = *p;
-			q.rate_law = rl;
-			if ((rc = check_rate(&q, e))) {
-				dem_mat_free(m);
-				return rc;
-			}
-		}
 		m->flags |= DEM_MAT_RATE;
 		m->rate_law = rl;
 		m->rate_m = p->rate_m;
