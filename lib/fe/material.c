@@ -236,6 +236,9 @@ int dem_mat_init(dem_mat_t *m, const dem_mat_param_t *p, dem_error_t *e)
 	}
 	if (n == 1)
 		m->tratio = m->hsl[0] > 0 ? m->hsl[0] / (3 * m->G + m->hsl[0]) : 0;
+	/* the floor of the static curve: its initial yield, every accepted
+	 * curve being non-decreasing (H, Q, B >= 0; a falling table refused) */
+	m->sy_floor = m->hsy[0];
 	m->flags = DEM_MAT_PLASTIC;
 	if (rl != DEM_RATE_NONE) {
 		m->flags |= DEM_MAT_RATE;
@@ -268,6 +271,8 @@ void dem_mat_kin_as_iso(dem_mat_t *m)
 		return;
 	m->flags &= ~DEM_MAT_KIN;
 	m->kin_iso = 1;
+	/* sum C_i/gamma_i (1 - exp(-gamma_i ep)) raises the curve (C_i > 0):
+	 * the floor holds */
 }
 
 void dem_mat_free(dem_mat_t *m)
@@ -742,11 +747,13 @@ int dem_mat_update_general(const dem_mat_t *m, const double deps[6], double dt,
  * lane yields or not. */
 static unsigned batch_general(const dem_mat_t *m, double dt, const double *restrict w,
 			      double *restrict sig, double *restrict ep,
-			      double *restrict kin, double *restrict wp)
+			      double *restrict kin, double *restrict wp, unsigned todo)
 {
 	const int nh = dem_mat_nhist(m);
 	unsigned mask = 0;
 	for (int l = 0; l < NB; l++) {
+		if (!(todo >> l & 1))
+			continue;
 		double st[6], a[6 * DEM_MAT_NKIN], wl;
 		gret_t g;
 		for (int k = 0; k < 6; k++)
@@ -816,13 +823,27 @@ unsigned dem_mat_update_batch(const dem_mat_t *m, double dt,
 	VSTORE(wp, zero);
 	if (!(m->flags & DEM_MAT_PLASTIC))
 		return 0;
-	if (m->flags & DEM_MAT_GENERAL)
-		return batch_general(m, dt, w, sig, ep, kin, wp);
 	/* yield check against the static curve (the rate factor is >= 1) */
 	vec p = (s[0] + s[1] + s[2]) / 3;
 	vec a[6] = { s[0] - p, s[1] - p, s[2] - p, s[3], s[4], s[5] };
 	vec q2 = 1.5 * (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) +
 		 3 * (a[3] * a[3] + a[4] * a[4] + a[5] * a[5]);
+	if (m->flags & DEM_MAT_GENERAL) {
+		const unsigned all = (1u << NB) - 1;
+		if (m->flags & DEM_MAT_KIN)   /* the back-stresses turn in every lane */
+			return batch_general(m, dt, w, sig, ep, kin, wp, all);
+		/* without back-stresses a lane below the curve's floor is
+		 * elastic: the general return (which would find it so) is left
+		 * to the others.  The floor is lowered by a relative 1e-12, far
+		 * above the rounding by which this q2 and the return's differ,
+		 * so that the result is the same bit for bit. */
+		double fl = m->sy_floor * m->sy_floor * (1 - 1e-12);
+		unsigned todo = 0;
+		for (int l = 0; l < NB; l++)
+			if (!(q2[l] <= fl))
+				todo |= 1u << l;
+		return todo ? batch_general(m, dt, w, sig, ep, kin, wp, todo) : 0;
+	}
 	vec sy, hs, e0;
 	VLOAD(e0, ep);
 	double enext[NB];

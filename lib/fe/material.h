@@ -107,6 +107,10 @@ typedef struct dem_mat {
 	/* One knot (linear hardening, slope H = hsl[0]): the tangent shear
 	 * ratio H / (3G + H) of dem_mat_tangent_ratio(), computed once */
 	double tratio;
+	/* A lower bound of the static flow curve over ep >= 0 (0: none
+	 * known): a trial stress below it is elastic whatever ep and the
+	 * rate, which lets the batched update skip the general return */
+	double sy_floor;
 	double voce_Q, voce_b, voce_H;
 	double jc_A, jc_B, jc_n;   /* thermal factor folded into A and B */
 	dem_mat_rate_law_t rate_law;

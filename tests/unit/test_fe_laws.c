@@ -495,6 +495,32 @@ static void test_batch(void **state)
 	assert_true(nplastic > 500);
 }
 
+/* The floor of the static curve that lets the batched update skip elastic
+ * lanes (the initial yield) bounds sigma_y(ep) from below for every law,
+ * Johnson-Cook's infinite initial slope and a kinematic law read as
+ * isotropic included. */
+static void test_floor(void **state)
+{
+	(void)state;
+	double tep[] = { 0, 0.01, 0.05, 0.2 }, tsy[] = { 400 * MPA, 400 * MPA, 420 * MPA, 430 * MPA };
+	dem_mat_param_t tab = {
+		.E = 72 * GPA, .nu = 0.33, .rho = 2800, .law = DEM_LAW_TABLE,
+		.nhard = 4, .hard_ep = tep, .hard_sy = tsy
+	};
+	const dem_mat_param_t *sets[] = { &P_VOCE, &P_JC, &P_KIN, &P_PRAGER, &tab, &P_KIN };
+	for (size_t k = 0; k < COUNT(sets); k++) {
+		dem_mat_t m;
+		init(&m, sets[k]);
+		if (k == COUNT(sets) - 1)
+			dem_mat_kin_as_iso(&m);
+		assert_true(m.sy_floor > 0);
+		assert_true(rel(m.sy_floor, sets[k] == &tab ? tsy[0] : mono(sets[k], 0)) < 1e-15);
+		for (double ep = 0; ep < 3; ep += 1e-3)
+			assert_true(dem_mat_flow_stress(&m, ep, 0) >= m.sy_floor);
+		dem_mat_free(&m);
+	}
+}
+
 /* The static stage's reading of a kinematic law: no history beyond ep,
  * and the flow stress of the monotonic curve, so uniaxial tension of the
  * isotropic equivalent is the combined law's monotonic curve. */
@@ -547,6 +573,7 @@ int main(void)
 		cmocka_unit_test(test_rate_jump),
 		cmocka_unit_test(test_tangent),
 		cmocka_unit_test(test_batch),
+		cmocka_unit_test(test_floor),
 		cmocka_unit_test(test_kin_as_iso),
 		cmocka_unit_test(test_refused),
 	};
