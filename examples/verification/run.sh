@@ -32,7 +32,7 @@
 #      averaged over the area, the last one reported.
 #
 # Environment: BIN (../../bin), THREADS (demshot --threads, 2), PER_D (10),
-# COVERAGE (200), SEED (1).  Writes OUT/NAME/: scene.yaml; single.{log,vtu,
+# COVERAGE (200), SEED (1), MATDIR (the folder of ALLOY.yaml: here).  Writes OUT/NAME/: scene.yaml; single.{log,vtu,
 # surf,sat,prof} (the single shot); dempack.log, shots.txt, demshot.log,
 # demprofile.log, profile.txt (every pass), sxx.txt (demprofile's saturation
 # table of sxx), surface.txt, last.dat (the last pass, for the plots); and
@@ -45,7 +45,7 @@ if [ -z "$angle" ] || [ -n "$rest" ]; then
 	exit 2
 fi
 here=$(cd "$(dirname "$0")" && pwd)
-mat=$here/$alloy.yaml
+mat=$(cd "${MATDIR:-$here}" && pwd)/$alloy.yaml
 [ -f "$mat" ] || { echo "run.sh: $name: no material file $mat" >&2; exit 2; }
 bin=$(cd "${BIN:-$here/../../bin}" && pwd)
 threads=${THREADS:-2}
@@ -166,6 +166,14 @@ awk -v d="$d" '!/^#/ { if ($1 != p) { p = $1; n = 0 } n++
 # seconds of demshot (random impacts) and of the whole case; the depths where
 # sxx rises to 5 % of its peak (mm; after the last pass, single shot); the
 # passes that demshot ended at run.pass_time ("not steady").
+# a material section 'use: NAME' of the library: its file for E, nu and
+# the yield stress (A of Johnson-Cook)
+libmat=
+use=$(sed -n 's/^ *use: *\([^ #]*\).*/\1/p' "scene.yaml" | head -n 1)
+if [ -n "$use" ]; then
+	libmat=$here/../../share/materials/$use.yaml
+	[ -f "$libmat" ] || { echo "run.sh: $name: no library material $libmat" >&2; exit 2; }
+fi
 awk -v name="$name" -v alloy="$alloy" -v d="$d" -v angle="$angle" -v h="$h" -v a="$a" -v depth="$depth" \
 	-v tcase="$(awk -v a="$t0" -v b="$t2" 'BEGIN { print b - a }')" '
 	function si(v, u) { return u == "GPa" ? v * 1e9 : u == "MPa" ? v * 1e6 : v }
@@ -183,6 +191,7 @@ awk -v name="$name" -v alloy="$alloy" -v d="$d" -v angle="$angle" -v h="$h" -v a
 	FILENAME ~ /\.yaml$/ && $1 == "E:" { E = si($2, $3) }
 	FILENAME ~ /\.yaml$/ && $1 == "nu:" { nu = $2 }
 	FILENAME ~ /\.yaml$/ && $1 == "yield:" { Y = si($2, $3) }
+	FILENAME ~ /\.yaml$/ && $1 == "A:" { Y = si($2, $3) }   # Johnson-Cook
 	FILENAME ~ /demshot\.log$/ && /not steady after/ { late++ }
 	FILENAME ~ /demshot\.log$/ && /^demshot: cost: / {
 		for (i = 3; i <= NF; i++) { split($i, kv, "="); c[kv[1]] = kv[2] } }
@@ -211,7 +220,7 @@ awk -v name="$name" -v alloy="$alloy" -v d="$d" -v angle="$angle" -v h="$h" -v a
 			P1[1] / 1e6, p1 / 1e6, cross(P1, D1, n1, 0) * 1e3,
 			c["steps"], c["energy_error"], c["wall_s"], tcase,
 			cross(P, D, n, 0.05) * 1e3, cross(P1, D1, n1, 0.05) * 1e3, late }' \
-	"scene.yaml" "demshot.log" "sxx.txt" "surface.txt" "single.surf" \
+	"scene.yaml" ${libmat:+"$libmat"} "demshot.log" "sxx.txt" "surface.txt" "single.surf" \
 	"single.prof" "profile.txt" "shots.txt" > ../"$name.row.tmp"
 mv -f ../"$name.row.tmp" ../"$name.row"
 cat ../"$name.row"
