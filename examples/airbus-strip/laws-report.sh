@@ -1,5 +1,6 @@
 #!/bin/sh
-# laws-report.sh "LAWS" - REPORT-laws.md of `make laws`: the quick preset
+# laws-report.sh "LAWS" [PNG] - REPORT-laws.md of `make laws` (and the
+# curves of every law in one plot, PNG, laws.gp): the quick preset
 # to 32 passes with each library law (out-laws/LAW/vV/passes.txt, pass p
 # is exposure n = p + 1) beside the linear law of the thesis on the same
 # preset (REPORT-long.md's table, from `make long`: the linear law's code
@@ -41,15 +42,67 @@ row() {   # law v passes-file saturation-file demshot-log
 				s != "" ? sprintf("%.0f", s / 1e6) : "-", w != "" ? w : "-"
 		}' "$3" ${4:+"$4"} ${5:+"$5"}
 }
+label() {
+	case $1 in
+	ideal) echo "ideal (thesis yield, no hardening: the saturated limit)" ;;
+	*) echo "$1" ;;
+	esac
+}
 for v in $vels; do
 	row "linear (thesis, REPORT-long.md)" "$v" "/tmp/laws-linear-$$-$v.txt" "" ""
 	for l in $laws; do
 		d=out-laws/$l/v$v
-		[ -f "$d/passes.txt" ] || { echo "| $l | $v | (not run) ||||||||"; continue; }
-		row "$l" "$v" "$d/passes.txt" "$d/saturation.txt" "$d/demshot.log"
+		[ -f "$d/passes.txt" ] || { echo "| $(label "$l") | $v | (not run) ||||||||"; continue; }
+		row "$(label "$l")" "$v" "$d/passes.txt" "$d/saturation.txt" "$d/demshot.log"
 	done
 done
+# the curves in one plot (laws.gp), the linear law's from REPORT-long.md
+if [ -n "${2:-}" ] && command -v gnuplot > /dev/null; then
+	files= labels=
+	for v in $vels; do
+		files="$files /tmp/laws-linear-$$-$v.txt" labels="$labels linear_(thesis)_${v}_m/s"
+		for l in $laws; do
+			[ -f "out-laws/$l/v$v/passes.txt" ] || continue
+			files="$files out-laws/$l/v$v/passes.txt" labels="$labels ${l}_${v}_m/s"
+		done
+	done
+	gnuplot -e "out='$2'; files='$files'; labels='$labels'" laws.gp
+fi
 rm -f /tmp/laws-linear-$$-*.txt
 echo
 echo "Surface sxx: the saturation table's surface value after the last pass (demprofile)."
-echo "The laws and their sources: share/materials/LAW.yaml and share/README.md."
+echo "The laws and their sources: share/materials/LAW.yaml and share/README.md.  The"
+echo "ideal row is no library material: the thesis's 450 MPa yield with the hardening"
+echo "modulus set to zero, the state every saturating isotropic law (Voce) tends to."
+
+# the full scene at one velocity (make laws-full), beside the linear law's
+# full run (REPORT-full.md, the same scene and demshot settings)
+full=
+for d in out-laws-full/*/; do
+	[ -f "$d/REPORT.md" ] && full="$full $(basename "$d")"
+done
+[ -n "$full" ] || exit 0
+echo
+echo "## Full size (scene.yaml: 0.05 mm elements, 139 240 hex8, 32 passes, 2 threads)"
+echo
+echo "\`make laws-full\`: the full scene at one velocity with the library law, beside the"
+echo "linear law's full run (REPORT-full.md, \`make\`, an earlier day: its time is"
+echo "comparable only as a figure of that day).  Issue 16 asks for at most 30 min."
+echo
+echo "| law | v (m/s) | h(16) mm | h(32) | 16 to 32 | demshot wall (min) | steps | ns per element-cycle |"
+echo "|---|---|---:|---:|---:|---:|---:|---:|"
+fullrow() {   # label v report column
+	awk -F'|' -v law="$1" -v v="$2" -v c="$4" '
+		/^\| [0-9]+ \|/ { h[$2 + 0] = $(c) + 0 }
+		/^- v = / && index($0, "v = " v " m/s:") {
+			for (i = 1; i <= split($0, f, " "); i++) { split(f[i], kv, "=");
+				if (kv[1] == "wall_s") w = kv[2]; if (kv[1] == "steps") st = kv[2];
+				if (kv[1] == "ns_per_elem_cycle") ns = kv[2] } }
+		END { printf "| %s | %s | %.3f | %.3f | %+.1f %% | %.1f | %d | %.1f |\n", law, v,
+			h[16], h[32], 100 * (h[32] / h[16] - 1), w / 60, st, ns }' "$3"
+}
+for l in $full; do
+	v=$(ls -d out-laws-full/$l/v* | head -1 | sed 's/.*\/v//')
+	fullrow "linear (thesis, REPORT-full.md)" "$v" REPORT-full.md "$([ "$v" = 36 ] && echo 3 || echo 5)"
+	fullrow "$(label "$l")" "$v" "out-laws-full/$l/REPORT.md" 3
+done
