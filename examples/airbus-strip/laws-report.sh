@@ -60,7 +60,7 @@ done
 if [ -n "${2:-}" ] && command -v gnuplot > /dev/null; then
 	files= labels=
 	for v in $vels; do
-		files="$files /tmp/laws-linear-$$-$v.txt" labels="$labels linear_(thesis)_${v}_m/s"
+		files="$files /tmp/laws-linear-$$-$v.txt" labels="$labels linear_thesis_${v}_m/s"
 		for l in $laws; do
 			[ -f "out-laws/$l/v$v/passes.txt" ] || continue
 			files="$files out-laws/$l/v$v/passes.txt" labels="$labels ${l}_${v}_m/s"
