@@ -160,6 +160,30 @@ close_to() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { r = a / b - 1; exit !(r 
 	grep -q 'arc_height: ' "$T/sum"
 }
 
+@test "demform: gauge_height, the J442 gauge on the unpeened face, is kx lx^2/8 + ky ly^2/8 of the fitted curvatures; no reading on a plate smaller than the gauge; a rectangle off the plate is bad input" {
+	# balls on grid nodes (10 mm elements): no interpolation in the reading
+	printf 'form: {gauge: [40 mm, 20 mm]}\n' | cat "$T/small.yaml" - > "$T/g.yaml"
+	demform -s "$T/g.yaml" "$T/prof" > "$T/sum" 2>/dev/null
+	[ "$(value gauge "$T/sum")" = 0.04 ]
+	ref=$(awk -v kx="$(value curvature_x "$T/sum")" -v ky="$(value curvature_y "$T/sum")" \
+		'BEGIN { printf "%.12g", kx * 0.04 * 0.04 / 8 + ky * 0.02 * 0.02 / 8 }')
+	close_to "$(value gauge_height "$T/sum")" "$ref" 0.005
+	# the default rectangle (31.75 x 15.875 mm) fits the 60 x 20 mm plate
+	demform -s "$T/small.yaml" "$T/prof" > "$T/sum" 2>/dev/null
+	grep -qx 'gauge: 0.03175 0.015875' "$T/sum"
+	awk '$1 == "gauge_height:" { n++; ok = $2 > 0 } END { exit !(n == 1 && ok) }' "$T/sum"
+	# a 30 x 10 mm plate: no reading, no error
+	printf 'material: {E: 72 GPa, nu: 0.33}\nplate: {size: [30 mm, 10 mm, 4 mm], element: 5 mm, layers: 4}\n' > "$T/tiny.yaml"
+	demform -s "$T/tiny.yaml" "$T/prof" > "$T/sum" 2>/dev/null
+	grep -q '^arc_height: ' "$T/sum"
+	! grep -q '^gauge' "$T/sum"
+	printf 'form: {gauge: [70 mm, 10 mm]}\n' | cat "$T/small.yaml" - > "$T/bad.yaml"
+	run --separate-stderr demform -s "$T/bad.yaml" -o "$T/o" "$T/prof"
+	[ "$status" -eq 1 ]
+	[[ ${stderr_lines[0]} == "demform: "*"form.gauge"*"larger than the plate"* ]]
+	[ ! -e "$T/o" ]
+}
+
 @test "demform: usage errors" {
 	usage_error demform -b "$T/prof"
 	usage_error demform --bogus
