@@ -19,8 +19,6 @@ setup() {
 		for (i = 1; i <= 10; i++) printf "%d %.12g\n", n[i], 3e-4 * (1 - exp(-0.15 * n[i] ^ 1.4)) }' > "$T/exp3"
 }
 
-value() { awk -v k="$1:" '$1 == k { print $2; exit }' "$2"; }
-close_to() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { r = a / b - 1; exit !(r < t && r > -t) }'; }
 
 @test "demfit --help and --version: stdout, exit 0" {
 	run --separate-stderr demfit --help
@@ -35,24 +33,24 @@ close_to() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { r = a / b - 1; exit !(r 
 @test "demfit: exact two-parameter points give T = ln 10 / b and H = 0.9 a (m and inches); the rule on the points brackets T" {
 	demfit --unit mm --columns 1:3 "$T/exp2" > "$T/fit" 2> "$T/err"
 	[ "$(value points "$T/fit")" -eq 8 ]
-	close_to "$(value exp2_a "$T/fit")" 3e-4 1e-6
-	close_to "$(value exp2_T "$T/fit")" "$(awk 'BEGIN { printf "%.12g", log(10) / 0.3 }')" 1e-6
-	close_to "$(value exp2_H "$T/fit")" 2.7e-4 1e-6
-	close_to "$(value exp2_H_in "$T/fit")" "$(awk 'BEGIN { printf "%.12g", 2.7e-4 / 0.0254 }')" 1e-5
+	rel_close "$(value exp2_a "$T/fit")" 3e-4 1e-6
+	rel_close "$(value exp2_T "$T/fit")" "$(awk 'BEGIN { printf "%.12g", log(10) / 0.3 }')" 1e-6
+	rel_close "$(value exp2_H "$T/fit")" 2.7e-4 1e-6
+	rel_close "$(value exp2_H_in "$T/fit")" "$(awk 'BEGIN { printf "%.12g", 2.7e-4 / 0.0254 }')" 1e-5
 	[ "$(value exp2_intensity "$T/fit")" = 0.0106A ]
 	[ "$(value exp2_extrapolated "$T/fit")" -eq 0 ]
 	# the three-parameter fit of the same points finds c = 1
-	close_to "$(value exp3_c "$T/fit")" 1 1e-5
+	rel_close "$(value exp3_c "$T/fit")" 1 1e-5
 	# the rule: H(16)/H(8) = 1.0907 <= 1.1 first (H(12) has no 24)
 	[ "$(value points_T "$T/fit")" = 8 ]
-	close_to "$(value points_ratio "$T/fit")" "$(awk 'BEGIN { printf "%.12g", (1 - exp(-4.8)) / (1 - exp(-2.4)) }')" 1e-5
+	rel_close "$(value points_ratio "$T/fit")" "$(awk 'BEGIN { printf "%.12g", (1 - exp(-4.8)) / (1 - exp(-2.4)) }')" 1e-5
 	tail -n 1 "$T/err" | grep -q '^demfit: cost: wall_s=.* points=8 iterations_exp2=[0-9]* iterations_exp3=[0-9]*$'
 }
 
 @test "demfit --form exp3: the fitted curve doubles to 1.1 at T; --strip names the strip; -o writes the same atomically" {
 	demfit --form exp3 --strip N "$T/exp3" > "$T/fit" 2>/dev/null
 	! grep -q '^exp2_' "$T/fit"
-	close_to "$(value exp3_c "$T/fit")" 1.4 1e-5
+	rel_close "$(value exp3_c "$T/fit")" 1.4 1e-5
 	a=$(value exp3_a "$T/fit") b=$(value exp3_b "$T/fit") c=$(value exp3_c "$T/fit") t=$(value exp3_T "$T/fit")
 	awk -v a="$a" -v b="$b" -v c="$c" -v t="$t" 'BEGIN {
 		r = (1 - exp(-b * (2 * t) ^ c)) / (1 - exp(-b * t ^ c)); exit !(r > 1.1 - 1e-9 && r < 1.1 + 1e-9) }'
