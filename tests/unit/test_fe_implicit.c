@@ -952,7 +952,7 @@ static void gauge_case(double L, double W, double h, double dxy, int nz, double 
 static void test_gauge_almen_strip(void **state)
 {
 	(void)state;
-	gauge_case(76.2 * MM, 19.05 * MM, 1.295 * MM, 0.635 * MM, 12, 210e9, 0.3, 0,
+	gauge_case(76.2 * MM, 19.05 * MM, 1.295 * MM, 1.27 * MM, 12, 210e9, 0.3, 0,
 		   31.75 * MM, 15.875 * MM, 0.005);
 }
 
@@ -963,8 +963,8 @@ static void test_gauge_almen_strip(void **state)
 static void test_gauge_plate(void **state)
 {
 	(void)state;
-	gauge_case(60 * MM, 40 * MM, 2 * MM, 1.5 * MM, 14, E_AL, NU_AL, 0, 40 * MM, 20 * MM, 0.005);
-	gauge_case(60 * MM, 40 * MM, 2 * MM, 1.5 * MM, 14, E_AL, NU_AL, 1, 40 * MM, 20 * MM, 0.005);
+	gauge_case(60 * MM, 40 * MM, 2 * MM, 2 * MM, 14, E_AL, NU_AL, 0, 40 * MM, 20 * MM, 0.005);
+	gauge_case(60 * MM, 40 * MM, 2 * MM, 2 * MM, 14, E_AL, NU_AL, 1, 40 * MM, 20 * MM, 0.005);
 }
 
 int main(void)
