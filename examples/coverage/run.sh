@@ -1,0 +1,101 @@
+#!/bin/bash
+# run.sh OUT - the plastic coverage of demprofile against the Avrami law
+# (issue 25, acceptance 3), on the FE/DE model of examples/verification
+# (Al 5052, Han 2004 Table 7.2; shot D = 0.28 mm at 50 m/s, normal to the
+# surface; elements D/PER_D in the fine region; lengths in multiples of D).
+#
+#   1. one shot at the centre of the area: its footprint by the plastic
+#      threshold (demprofile --surface, plastic share times the region's
+#      area, the whole fine region), a = sqrt(footprint / pi);
+#   2. a random stream of independent impacts (dempack --pattern random
+#      --per-pass 1: one shot a pass, so no separation within a pass skews
+#      the positions from uniform) up to the impacts that the Avrami law
+#      needs for 98 %, N98 = -ln(0.02) A / (pi a^2), A the impact area; the
+#      plastic coverage of the profile region (the area less a margin of at
+#      least a, so that every point of it sees impacts on all sides) after
+#      every impact (demprofile --surface).
+#
+# Environment: BIN (../../bin), THREADS (demshot --threads, 1), PER_D (5),
+# AREA_D (the side of the impact area in D, 8), SEED (1), D (0.28, mm).
+# Writes OUT/: scene.yaml, single.* (the single impact), shots.txt,
+# demshot.log, surface.txt (a row per pass: column 11 the plastic
+# coverage), a.txt (the footprint); report.sh reads them.
+set -eo pipefail
+out=$1
+here=$(cd "$(dirname "$0")" && pwd)
+bin=$(cd "${BIN:-$here/../../bin}" && pwd)
+threads=${THREADS:-1}
+per_d=${PER_D:-5}
+area_d=${AREA_D:-8}
+seed=${SEED:-1}
+d=${D:-0.28}
+mkdir -p "$out"
+cd "$out"
+
+# lengths in mm from D: shot radius, element, impact area, block side,
+# block depth, fine depth, profile margin (0.75 D: at least the footprint
+# radius, 0.55 D measured at D/5), pass time (us, 2 D / v)
+read -r r h area side thick fdepth margin ptime <<< "$(awk -v d="$d" -v n="$per_d" -v k="$area_d" 'BEGIN {
+	printf "%.6g %.6g %.6g %.6g %.6g %.6g %.6g %.6g\n",
+		d / 2, d / n, k * d, (k + 0.4) * d, 1.5 * d, 0.6 * d, 0.75 * d, 2 * d / 50 * 1e3 }')"
+
+{
+	echo "# scene of examples/coverage, written by run.sh: the model of"
+	echo "# examples/verification (Han 2004, Ch. 7.5-7.6), D = $d mm, area ${area_d}D."
+	echo
+	cat "$here/../verification/Al5052.yaml"
+	cat <<EOS
+
+pack:
+  method: shots
+  area: [$area mm, $area mm]
+
+shot:
+  radius: $r mm
+  speed: 50 m/s
+  angle: 90 deg
+  density: 7800 kg/m^3
+
+block:
+  size: [$side mm, $side mm, $thick mm]
+  element: $h mm
+  fine: [$area mm, $area mm]
+  fine_depth: $fdepth mm
+  ratio: 1.3
+
+contact:
+  m: 1.5
+  alpha: 2
+
+run:
+  damping: 0.05
+  pass_time: $ptime us
+
+# the plastic coverage (demprofile's default threshold, 0.002) over the
+# area less 0.75 D at each edge
+profile:
+  margin: $margin mm
+EOS
+} > scene.yaml
+
+# 1. one shot at the centre: the footprint over the whole area (margin 0)
+"$bin"/dempack -s scene.yaml shots --pattern grid --grid 1 --passes 1 --seed "$seed" -q 2> single.log |
+	"$bin"/demshot -s scene.yaml --threads "$threads" -q -o single.state 2>> single.log
+"$bin"/demprofile -s scene.yaml -q --margin 0 --surface single.surf -o /dev/null single.state 2>> single.log
+rm -f single.state
+# a = sqrt(plastic share * region area / pi)
+awk '!/^#/ { a = sqrt($11 * $10 / 3.141592653589793) } END {
+	if (!(a > 0)) { print "run.sh: the single impact left no plastic footprint" > "/dev/stderr"; exit 3 }
+	printf "%.9g\n", a }' single.surf > a.txt
+a=$(cat a.txt)
+if ! awk -v a="$a" -v m="$margin" 'BEGIN { exit !(a <= m * 1e-3) }'; then
+	echo "run.sh: the footprint radius $a m is larger than the margin $margin mm" >&2
+	exit 3
+fi
+
+# 2. the impacts the Avrami law needs for 98 %, one a pass
+n98=$(awk -v a="$a" -v s="$area" 'BEGIN { A = (s * 1e-3)^2; n = -log(0.02) * A / (3.141592653589793 * a * a); printf "%d\n", n == int(n) ? n : int(n) + 1 }')
+"$bin"/dempack -s scene.yaml shots --pattern random --per-pass 1 --passes "$n98" --seed "$seed" \
+		-o shots.txt 2> dempack.log
+"$bin"/demshot -s scene.yaml --threads "$threads" shots.txt 2> demshot.log |
+	"$bin"/demprofile -s scene.yaml -q --surface surface.txt -o profile.txt 2> demprofile.log
