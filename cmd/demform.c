@@ -7,8 +7,8 @@
  * plastic strain to a plate of hexahedra built from the scene, finds the
  * equilibrium by Newton-Raphson (small or large strain, pseudo-load
  * increments with cut-back), and prints the formed shape: arc height,
- * curvatures, the stress through the thickness at the centre, the Newton
- * log.  See demform(1).
+ * the Almen gauge's reading (SAE J442), curvatures, the stress through the
+ * thickness at the centre, the Newton log.  See demform(1).
  */
 #include <math.h>
 #include <stdio.h>
@@ -46,7 +46,8 @@ static const char usage[] = "Usage: demform [OPTION]... [FILE]\n";
 static const char purpose[] =
 	"Form a plate with residual profiles (a profile stream, FILE or standard input)\n"
 	"as initial conditions (Ch. 8.5): implicit static Newton-Raphson, then print\n"
-	"the arc height, curvatures and Newton log as 'key: value' lines.\n";
+	"the arc height, the Almen gauge's reading, curvatures and Newton log as\n"
+	"'key: value' lines.\n";
 static const char epilogue[] =
 	"Examples:\n"
 	"  demprofile state.gz | demform -s strip.yaml\n"
