@@ -234,14 +234,30 @@ int main(int argc, char **argv)
 		goto out;
 	dem_cost_time(&cost, "read", dem_wall() - w);
 	w = dem_wall();
+	/* A form whose fit fails to converge is reported as such when the
+	 * other converged; bad points fail both alike. */
 	dem_sat_fit_t fit[2];
+	dem_error_t fe[2] = {{0}, {0}};
+	int ok[2] = {0, 0}, nok = 0;
 	for (int k = 0; k < 2; k++) {
-		dem_error_t fe = {0};
-		if ((cl.forms >> k & 1) && (rc = dem_sat_fit(n, t, h, (dem_sat_form_t)k, &fit[k], &fe))) {
-			dem_error_set(&e, rc, "%s: %s", cl.input ? cl.input : "stdin", fe.msg);
+		if (!(cl.forms >> k & 1))
+			continue;
+		int frc = dem_sat_fit(n, t, h, (dem_sat_form_t)k, &fit[k], &fe[k]);
+		if (frc && frc != DEM_ENUMERIC) {
+			rc = dem_error_set(&e, frc, "%s: %s", cl.input ? cl.input : "stdin", fe[k].msg);
 			goto out;
 		}
+		ok[k] = !frc;
+		nok += ok[k];
 	}
+	if (!nok) {
+		int k = cl.forms & 1 ? 0 : 1;
+		rc = dem_error_set(&e, DEM_ENUMERIC, "%s: %s", cl.input ? cl.input : "stdin", fe[k].msg);
+		goto out;
+	}
+	for (int k = 0; k < 2; k++)
+		if ((cl.forms >> k & 1) && !ok[k] && !cl.com.quiet)
+			fprintf(stderr, "%s: %s: %s\n", PROG, cl.input ? cl.input : "stdin", fe[k].msg);
 	double T = 0, H = 0, ratio = 0;
 	int found = dem_sat_points(n, t, h, &T, &H, &ratio);
 	dem_cost_time(&cost, "fit", dem_wall() - w);
@@ -255,9 +271,13 @@ int main(int argc, char **argv)
 	fprintf(o, "# demfit %s: saturation curve, H(t) = a (1 - exp(-b t^c)); heights in m "
 		"(_in: inches), exposures in the input's unit\n", DEM_VERSION);
 	fprintf(o, "points: %zu\nstrip: %c\n", n, cl.strip);
-	for (int k = 0; k < 2; k++)
-		if (cl.forms >> k & 1)
+	for (int k = 0; k < 2; k++) {
+		if (!(cl.forms >> k & 1))
+			continue;
+		fprintf(o, "%s_converged: %d\n", dem_sat_form_names[k], ok[k]);
+		if (ok[k])
 			put_fit(o, dem_sat_form_names[k], &fit[k], t[n - 1], cl.strip);
+	}
 	fprintf(o, "points_saturates: %d\n", found);
 	if (found)
 		fprintf(o, "points_T: %.9g\npoints_H: %.9g\npoints_H_in: %.6g\npoints_intensity: "
@@ -266,7 +286,7 @@ int main(int argc, char **argv)
 		goto out;
 	dem_cost_count(&cost, "points", (double)n);
 	for (int k = 0; k < 2; k++)
-		if (cl.forms >> k & 1)
+		if (ok[k])
 			dem_cost_count(&cost, k ? "iterations_exp3" : "iterations_exp2",
 				       fit[k].iterations);
 out:

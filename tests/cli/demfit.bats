@@ -83,6 +83,19 @@ setup() {
 	[ "$status" -eq 4 ]
 }
 
+@test "demfit: a curve that jumps to its plateau: exp3 does not converge, reported beside exp2 (exit 0); asked alone, exit 3 and no output" {
+	printf '1 0.05\n2 0.3\n4 0.28\n8 0.31\n16 0.29\n' > "$T/jump"
+	run --separate-stderr demfit "$T/jump"
+	[ "$status" -eq 0 ]
+	[ "$(value exp2_converged <(echo "$output"))" -eq 1 ]
+	[ "$(value exp3_converged <(echo "$output"))" -eq 0 ]
+	! grep -q '^exp3_a:' <<< "$output"
+	[ "${stderr_lines[0]}" = "demfit: $T/jump: saturation curve: the exp3 fit did not converge (exceeded max number of iterations)" ]
+	run --separate-stderr demfit --form exp3 -o "$T/o" "$T/jump"
+	[ "$status" -eq 3 ]
+	[ ! -e "$T/o" ]
+}
+
 @test "demfit: usage errors" {
 	usage_error demfit --form exp4 "$T/exp2"
 	usage_error demfit --columns 2:2 "$T/exp2"
