@@ -4,9 +4,10 @@
 # (Al 5052, Han 2004 Table 7.2; shot D = 0.28 mm at 50 m/s, normal to the
 # surface; elements D/PER_D in the fine region; lengths in multiples of D).
 #
-#   1. one shot at the centre of the area: its footprint by the plastic
-#      threshold (demprofile --surface, plastic share times the region's
-#      area, the whole fine region), a = sqrt(footprint / pi);
+#   1. one shot at the centre of the area, four times, the area moved by
+#      fractions of an element: its footprint by the plastic threshold
+#      (demprofile --surface, plastic share times the region's area, the
+#      whole impact area), a = sqrt(mean footprint / pi);
 #   2. a random stream of independent impacts (dempack --pattern random
 #      --per-pass 1: one shot a pass, so no separation within a pass skews
 #      the positions from uniform) up to the impacts that the Avrami law
@@ -39,7 +40,9 @@ read -r r h area side thick fdepth margin ptime <<< "$(awk -v d="$d" -v n="$per_
 	printf "%.6g %.6g %.6g %.6g %.6g %.6g %.6g %.6g\n",
 		d / 2, d / n, k * d, (k + 0.4) * d, 1.5 * d, 0.6 * d, 0.75 * d, 2 * d / 50 * 1e3 }')"
 
-{
+# scene CX CY: the scene with the impact area centred at (CX, CY) mm (the
+# block stays centred on 0)
+scene() {
 	echo "# scene of examples/coverage, written by run.sh: the model of"
 	echo "# examples/verification (Han 2004, Ch. 7.5-7.6), D = $d mm, area ${area_d}D."
 	echo
@@ -49,6 +52,7 @@ read -r r h area side thick fdepth margin ptime <<< "$(awk -v d="$d" -v n="$per_
 pack:
   method: shots
   area: [$area mm, $area mm]
+  center: [$1 mm, $2 mm]
 
 shot:
   radius: $r mm
@@ -76,15 +80,31 @@ run:
 profile:
   margin: $margin mm
 EOS
-} > scene.yaml
+}
+scene 0 0 > scene.yaml
 
-# 1. one shot at the centre: the footprint over the whole area (margin 0)
-"$bin"/dempack -s scene.yaml shots --pattern grid --grid 1 --passes 1 --seed "$seed" -q 2> single.log |
-	"$bin"/demshot -s scene.yaml --threads "$threads" -q -o single.state 2>> single.log
-"$bin"/demprofile -s scene.yaml -q --margin 0 --surface single.surf -o /dev/null single.state 2>> single.log
-rm -f single.state
-# a = sqrt(plastic share * region area / pi)
-awk '!/^#/ { a = sqrt($11 * $10 / 3.141592653589793) } END {
+# 1. one shot at the centre of the area, the area moved by 0, h/2 along x,
+#    h/2 along both, h/4 along both (h the element): where an impact falls
+#    on the grid changes the elements it covers.  Each footprint over the
+#    whole area (margin 0); a from their mean.
+: > single.surf
+: > single.log
+for off in "0 0" "0.5 0" "0.5 0.5" "0.25 0.25"; do
+	set -- $off
+	scene "$(awk -v f="$1" -v h="$h" 'BEGIN { print f * h }')" \
+		"$(awk -v f="$2" -v h="$h" 'BEGIN { print f * h }')" > single.yaml
+	"$bin"/dempack -s single.yaml shots --pattern grid --grid 1 --passes 1 --seed "$seed" -q 2>> single.log |
+		"$bin"/demshot -s single.yaml --threads "$threads" -q -o single.state 2>> single.log
+	"$bin"/demprofile -s single.yaml -q --margin 0 --surface single.tmp -o /dev/null single.state 2>> single.log
+	# the table's header once, then a row per offset (in elements)
+	awk -v o="$off" -v head="$([ -s single.surf ] && echo 0 || echo 1)" \
+		'/^#/ { if (head) print; next } { print $0, "# offset", o }' single.tmp >> single.surf
+done
+rm -f single.state single.tmp single.yaml
+# a = sqrt(mean footprint / pi), the footprint the plastic share times the
+# region's area
+awk '!/^#/ { n++; s += $11 * $10 } END {
+	a = n ? sqrt(s / n / 3.141592653589793) : 0
 	if (!(a > 0)) { print "run.sh: the single impact left no plastic footprint" > "/dev/stderr"; exit 3 }
 	printf "%.9g\n", a }' single.surf > a.txt
 a=$(cat a.txt)
