@@ -208,9 +208,9 @@ static void put_fit(FILE *o, const char *k, const dem_sat_fit_t *f, double tmax,
 		f->saturates);
 	if (!f->saturates)
 		return;
-	fprintf(o, "%s_T: %.9g\n%s_H: %.9g\n%s_H_in: %.6g\n%s_intensity: %.4f%c\n"
-		"%s_extrapolated: %d\n", k, f->T, k, f->H, k, f->H / INCH, k, f->H / INCH, strip, k,
-		2 * f->T > tmax * (1 + 1e-12));
+	fprintf(o, "%s_T: %.9g\n%s_H: %.9g\n%s_H_mm: %.6g\n%s_H_in: %.6g\n%s_intensity: %.4f%c\n"
+		"%s_extrapolated: %d\n", k, f->T, k, f->H, k, f->H * 1e3, k, f->H / INCH, k,
+		f->H / INCH, strip, k, 2 * f->T > tmax * (1 + 1e-12));
 }
 
 int main(int argc, char **argv)
@@ -280,8 +280,9 @@ int main(int argc, char **argv)
 	}
 	fprintf(o, "points_saturates: %d\n", found);
 	if (found)
-		fprintf(o, "points_T: %.9g\npoints_H: %.9g\npoints_H_in: %.6g\npoints_intensity: "
-			"%.4f%c\npoints_ratio: %.6g\n", T, H, H / INCH, H / INCH, cl.strip, ratio);
+		fprintf(o, "points_T: %.9g\npoints_H: %.9g\npoints_H_mm: %.6g\npoints_H_in: %.6g\n"
+			"points_intensity: %.4f%c\npoints_ratio: %.6g\n", T, H, H * 1e3, H / INCH,
+			H / INCH, cl.strip, ratio);
 	if (out.f && (rc = dem_afile_commit(&out, 0, &e)))
 		goto out;
 	dem_cost_count(&cost, "points", (double)n);

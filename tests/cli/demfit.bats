@@ -36,6 +36,7 @@ setup() {
 	rel_close "$(value exp2_a "$T/fit")" 3e-4 1e-6
 	rel_close "$(value exp2_T "$T/fit")" "$(awk 'BEGIN { printf "%.12g", log(10) / 0.3 }')" 1e-6
 	rel_close "$(value exp2_H "$T/fit")" 2.7e-4 1e-6
+	rel_close "$(value exp2_H_mm "$T/fit")" 0.27 1e-6
 	rel_close "$(value exp2_H_in "$T/fit")" "$(awk 'BEGIN { printf "%.12g", 2.7e-4 / 0.0254 }')" 1e-5
 	[ "$(value exp2_intensity "$T/fit")" = 0.0106A ]
 	[ "$(value exp2_extrapolated "$T/fit")" -eq 0 ]
