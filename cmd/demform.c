@@ -7,8 +7,8 @@
  * plastic strain to a plate of hexahedra built from the scene, finds the
  * equilibrium by Newton-Raphson (small or large strain, pseudo-load
  * increments with cut-back), and prints the formed shape: arc height,
- * curvatures, the stress through the thickness at the centre, the Newton
- * log.  See demform(1).
+ * the Almen gauge's reading (SAE J442), curvatures, the stress through the
+ * thickness at the centre, the Newton log.  See demform(1).
  */
 #include <math.h>
 #include <stdio.h>
@@ -46,7 +46,8 @@ static const char usage[] = "Usage: demform [OPTION]... [FILE]\n";
 static const char purpose[] =
 	"Form a plate with residual profiles (a profile stream, FILE or standard input)\n"
 	"as initial conditions (Ch. 8.5): implicit static Newton-Raphson, then print\n"
-	"the arc height, curvatures and Newton log as 'key: value' lines.\n";
+	"the arc height, the Almen gauge's reading, curvatures and Newton log as\n"
+	"'key: value' lines.\n";
 static const char epilogue[] =
 	"Examples:\n"
 	"  demprofile state.gz | demform -s strip.yaml\n"
@@ -118,6 +119,8 @@ struct settings {
 	int init;
 	double chord, fit[2];
 	int chord_axis;
+	double gauge[2];        /* the gauge's ball rectangle, lx x ly */
+	int gauge_fits;         /* on the plate: a reading per step */
 	long pass;
 	int nstep;
 	struct step step[MAXSTEP];
@@ -162,6 +165,9 @@ static int read_scene(dem_scene_t *s, int accuracy, struct settings *st, dem_err
 	static const char *const bcs[] = {"free", "fixed", "normal", NULL};
 	static const char *const faces[] = {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"};
 	static const double size0[3] = {0.150, 0.050, 0.004}, fit0[2] = {1, 1};
+	/* The J442 gauge's balls: 1.25 x 0.625 in (31.75 x 15.875 mm), a
+	 * labelled default, not read from the standard (demform(1)). */
+	static const double gauge0[2] = {0.03175, 0.015875};
 	static const double tol0[3] = {1e-6, 1e-8, 1e-10};  /* --accuracy */
 	double size[3];
 	long nz, it, ninc, cuts;
@@ -190,6 +196,7 @@ static int read_scene(dem_scene_t *s, int accuracy, struct settings *st, dem_err
 	    dem_scene_quantity(s, "form.chord", DEM_DIM_LENGTH, p->L, DEM_SCENE_GT0, HUGE_VAL, &st->chord, e) ||
 	    dem_scene_choice(s, "form.chord_axis", axes, 0, &st->chord_axis, e) ||
 	    dem_scene_vector(s, "form.fit", DEM_DIM_NONE, 2, fit0, DEM_SCENE_GT0, 1, st->fit, e) ||
+	    dem_scene_vector(s, "form.gauge", DEM_DIM_LENGTH, 2, gauge0, DEM_SCENE_GT0, HUGE_VAL, st->gauge, e) ||
 	    dem_scene_int(s, "form.pass", -1, -1, 1000000, &st->pass, e))
 		return e->code;
 	o->large = large;
@@ -201,6 +208,12 @@ static int read_scene(dem_scene_t *s, int accuracy, struct settings *st, dem_err
 		return dem_scene_error(s, "form.element", e, "bbar is small strain only");
 	if (st->chord > (st->chord_axis ? p->W : p->L) * (1 + 1e-12))
 		return dem_scene_error(s, "form.chord", e, "longer than the plate");
+	/* on a plate smaller than the default rectangle, no reading; one the
+	 * scene gives must fit */
+	st->gauge_fits = st->gauge[0] <= p->L * (1 + 1e-12) && st->gauge[1] <= p->W * (1 + 1e-12);
+	if (!st->gauge_fits && dem_scene_has(s, "form.gauge"))
+		return dem_scene_error(s, "form.gauge", e, "the balls' rectangle %g x %g m is larger "
+				       "than the plate (%g x %g m)", st->gauge[0], st->gauge[1], p->L, p->W);
 
 	st->nstep = 0;
 	for (int k = 1; k <= MAXSTEP; k++) {
@@ -433,6 +446,8 @@ int main(int argc, char **argv)
 		set.plate.L, set.plate.W, set.plate.h, mesh.ne, mesh.nn,
 		set.opts.large ? "large" : "small",
 		set.opts.rule == DEM_HEX8_EAS ? "eas" : set.opts.rule == DEM_HEX8_BBAR ? "bbar" : "full");
+	if (set.gauge_fits)
+		fprintf(sum, "gauge: %.9g %.9g\n", set.gauge[0], set.gauge[1]);
 	fprintf(sum, "# newton: step increment lambda iteration |R|:N |R|/|F| |du|:m\n");
 
 	for (int k = 0; k < set.nstep; k++) {
@@ -457,11 +472,17 @@ int main(int argc, char **argv)
 		dem_form_shape_t sh;
 		if ((rc = dem_form_shape(form, set.chord, set.chord_axis, set.fit[0], set.fit[1], &sh, &e)))
 			goto out;
-		fprintf(sum, "step: %d\narc_height: %.9g\nchord: %.9g\nmax_deflection: %.9g\n"
+		fprintf(sum, "step: %d\narc_height: %.9g\nchord: %.9g\n", k + 1, sh.arc, set.chord);
+		if (set.gauge_fits) {
+			double gh;
+			if ((rc = dem_form_gauge(form, set.gauge[0], set.gauge[1], &gh, &e)))
+				goto out;
+			fprintf(sum, "gauge_height: %.9g\n", gh);
+		}
+		fprintf(sum, "max_deflection: %.9g\n"
 			"curvature_x: %.9g\ncurvature_y: %.9g\ncurvature_xy: %.9g\n"
 			"residual: %.6e\nresidual_rel: %.6e\nload: %.6e\n",
-			k + 1, sh.arc, set.chord, sh.wmax, sh.kx, sh.ky, sh.kxy, st.rnorm, st.rrel,
-			st.fnorm);
+			sh.wmax, sh.kx, sh.ky, sh.kxy, st.rnorm, st.rrel, st.fnorm);
 		if (!cl.com.quiet && cl.com.verbose)
 			fprintf(stderr, "%s: step %d: arc height %.6g m, curvatures %.6g %.6g 1/m\n",
 				PROG, k + 1, sh.arc, sh.kx, sh.ky);

@@ -33,7 +33,7 @@
 #define PROG "demprofile"
 
 enum { OPT_PASS = DEM_OPT_PROGRAM, OPT_AREA, OPT_MARGIN, OPT_BINS, OPT_BIN_SIZE,
-       OPT_THRESHOLD, OPT_SURFACE, OPT_SATURATION, OPT_FIELD };
+       OPT_THRESHOLD, OPT_PLASTIC, OPT_SURFACE, OPT_SATURATION, OPT_FIELD };
 
 static const dem_opt_t options[] = {
 	{"pass", OPT_PASS, "PASS", "the pass to profile: a pass number, last or all (default all)"},
@@ -41,7 +41,8 @@ static const dem_opt_t options[] = {
 	{"margin", OPT_MARGIN, "L", "leave out L inside each edge of the area (default 10 % of its shorter side)"},
 	{"bins", OPT_BINS, "N", "average over N depth bins through the block instead of element layers"},
 	{"bin-size", OPT_BIN_SIZE, "L", "average over depth bins L deep instead of element layers"},
-	{"threshold", OPT_THRESHOLD, "D", "indentation that counts as dimpled, for the coverage (default 1um)"},
+	{"threshold", OPT_THRESHOLD, "D", "indentation that counts as dimpled, for the indented share (default 1um)"},
+	{"plastic-threshold", OPT_PLASTIC, "EP", "plastic strain that counts as covered, for the plastic coverage (default 0.002)"},
 	{"field", OPT_FIELD, "NAME", "the field of the saturation table: sxx ... szx, exx ... ezx, ep (default sxx)"},
 	{"surface", OPT_SURFACE, "FILE", "write the surface metrics per pass to FILE (a table)"},
 	{"saturation", OPT_SATURATION, "FILE", "write the saturation table (surface and peak values per pass) to FILE"},
@@ -114,6 +115,9 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 			dem_common_override(m, "profile.bin_size", optarg, "--bin-size");
 			break;
 		case OPT_THRESHOLD: dem_common_override(m, "profile.threshold", optarg, "--threshold"); break;
+		case OPT_PLASTIC:
+			dem_common_override(m, "profile.plastic_threshold", optarg, "--plastic-threshold");
+			break;
 		case OPT_FIELD: dem_common_override(m, "profile.field", optarg, "--field"); break;
 		case OPT_SURFACE: cl->surface = optarg; break;
 		case OPT_SATURATION: cl->saturation = optarg; break;
@@ -139,7 +143,7 @@ struct settings {
 	double area[2], center[2];      /* area NAN: not in the scene */
 	double margin;                  /* NAN: 10 % of the shorter side */
 	long bins;
-	double bin_size, threshold;
+	double bin_size, threshold, ep_threshold;
 	int field;
 };
 
@@ -156,6 +160,9 @@ static int read_scene(dem_scene_t *s, struct settings *st, dem_error_t *e)
 	    dem_scene_int(s, "profile.bins", 0, 0, 1000000, &st->bins, e) ||
 	    dem_scene_quantity(s, "profile.bin_size", DEM_DIM_LENGTH, 0, 0, HUGE_VAL, &st->bin_size, e) ||
 	    dem_scene_quantity(s, "profile.threshold", DEM_DIM_LENGTH, 1e-6, 0, HUGE_VAL, &st->threshold, e) ||
+	    /* the plastic strain of the 0.2 % offset yield (Rp0.2, ISO 6892-1,
+	     * ASTM E8): what a tensile test counts as having yielded */
+	    dem_scene_quantity(s, "profile.plastic_threshold", DEM_DIM_NONE, 0.002, 0, 1, &st->ep_threshold, e) ||
 	    dem_scene_choice(s, "profile.field", fields, 0, &st->field, e))
 		return e->code;
 	if (st->bins > 0 && st->bin_size > 0)
@@ -206,6 +213,7 @@ static int find_region(const struct settings *st, dem_state_reader_t *r,
 					     lo[0], hi[0], lo[1], hi[1], *from);
 	}
 	o->threshold = st->threshold;
+	o->ep_threshold = st->ep_threshold;
 	o->bin = st->bin_size;
 	if (st->bins > 0) {
 		double zlo = HUGE_VAL, zhi = -HUGE_VAL;
@@ -324,10 +332,10 @@ static int open_outputs(struct run *u, dem_state_reader_t *r, const dem_profile_
 		if ((rc = dem_afile_open(&u->surf, cl->surface, "w", e)))
 			return rc;
 		fprintf(u->surf.f, "# demprofile surface metrics per pass (demprofile(1))\n"
-			"# region %.17g %.17g %.17g %.17g m, threshold %.17g m\n"
-			"# pass time:s coverage:- depth_max:m depth_mean:m radius:m ra:m "
-			"dimples:- patches:- area:m^2\n",
-			o->lo[0], o->lo[1], o->hi[0], o->hi[1], o->threshold);
+			"# region %.17g %.17g %.17g %.17g m, threshold %.17g m, plastic threshold %.17g\n"
+			"# pass time:s indented:- depth_max:m depth_mean:m radius:m ra:m "
+			"dimples:- patches:- area:m^2 plastic:-\n",
+			o->lo[0], o->lo[1], o->hi[0], o->hi[1], o->threshold, o->ep_threshold);
 	}
 	if (cl->saturation) {
 		const char *unit = u->st->field < 6 ? "Pa" : "-";
@@ -354,22 +362,23 @@ static int emit(struct run *u, struct result *r, dem_error_t *e)
 		FILE *f = u->surf.f;
 		fprintf(f, "%u ", r->pass);
 		put(f, r->time, " ");
-		put(f, s->coverage, " ");
+		put(f, s->indented, " ");
 		put(f, s->depth_max, " ");
 		put(f, s->depth_mean, " ");
 		put(f, s->radius, " ");
 		put(f, s->ra, " ");
 		fprintf(f, "%zu %zu ", s->dimples, s->patches);
-		put(f, s->area, "\n");
+		put(f, s->area, " ");
+		put(f, s->plastic, "\n");
 	}
 	if (u->sat.f)
 		saturation_row(u->sat.f, r, u->st->field);
 	if (u->cl->com.verbose) {
 		fprintf(stderr, "%s: pass %u (t = %g s): %zu depth points", PROG, r->pass, r->time, r->p.n);
 		if (r->has_surface)
-			fprintf(stderr, "; coverage %.4g, %zu whole dimples of mean depth %.4g um "
-				"and radius %.4g mm, deepest %.4g um, Ra %.4g um",
-				s->coverage, s->dimples, 1e6 * s->depth_mean, 1e3 * s->radius,
+			fprintf(stderr, "; plastic coverage %.4g, indented %.4g, %zu whole dimples of "
+				"mean depth %.4g um and radius %.4g mm, deepest %.4g um, Ra %.4g um",
+				s->plastic, s->indented, s->dimples, 1e6 * s->depth_mean, 1e3 * s->radius,
 				1e6 * s->depth_max, 1e6 * s->ra);
 		fputc('\n', stderr);
 	}
@@ -420,7 +429,7 @@ static int profile_stream(struct run *u, dem_state_reader_t *r, const dem_profil
 			if ((rc = dem_profile_compute(m, f.sig, f.eps, f.ep, o, &cur.p, e)))
 				goto out;
 			cur.has_surface = m->nx > 0;
-			if (cur.has_surface && (rc = dem_surface_compute(m, f.u, o, &cur.s, e)))
+			if (cur.has_surface && (rc = dem_surface_compute(m, f.u, f.ep, o, &cur.s, e)))
 				goto out;
 			cur.have = 1;
 			cur.pass = f.pass;

@@ -575,17 +575,26 @@ static int solve_small(int n, double *A, double *b)
 	return 0;
 }
 
-/* The deflection of the mid-surface at node (i, j): the mean of the top
- * and bottom faces' w, free of the thickness change. */
-static double mid_w(const dem_form_t *f, int i, int j)
+/* The deflection at node (i, j) of the mid-surface (k < 0: the mean of
+ * the top and bottom faces' w, free of the thickness change) or of the
+ * face at grid line k. */
+static double node_w(const dem_form_t *f, int i, int j, int k)
 {
 	const dem_mesh_t *m = f->mesh;
+	if (k >= 0)
+		return f->un[3 * dem_mesh_node(m, i, j, k) + 2];
 	return 0.5 * (f->un[3 * dem_mesh_node(m, i, j, 0) + 2] +
 		      f->un[3 * dem_mesh_node(m, i, j, m->nz) + 2]);
 }
 
-/* Mid-surface w at (x, y) by bilinear interpolation. */
-static double surface_w(const dem_form_t *f, double x, double y)
+static double mid_w(const dem_form_t *f, int i, int j)
+{
+	return node_w(f, i, j, -1);
+}
+
+/* w at (x, y) by bilinear interpolation: of the mid-surface (k < 0) or of
+ * the face at grid line k. */
+static double surface_w(const dem_form_t *f, double x, double y, int k)
 {
 	const dem_mesh_t *m = f->mesh;
 	int i = 0, j = 0;
@@ -597,8 +606,8 @@ static double surface_w(const dem_form_t *f, double x, double y)
 	double t = (y - m->gy[j]) / (m->gy[j + 1] - m->gy[j]);
 	s = fmin(fmax(s, 0), 1);
 	t = fmin(fmax(t, 0), 1);
-	double w00 = mid_w(f, i, j), w10 = mid_w(f, i + 1, j);
-	double w01 = mid_w(f, i, j + 1), w11 = mid_w(f, i + 1, j + 1);
+	double w00 = node_w(f, i, j, k), w10 = node_w(f, i + 1, j, k);
+	double w01 = node_w(f, i, j + 1, k), w11 = node_w(f, i + 1, j + 1, k);
 	return (1 - s) * (1 - t) * w00 + s * (1 - t) * w10 + (1 - s) * t * w01 + s * t * w11;
 }
 
@@ -643,8 +652,32 @@ int dem_form_shape(const dem_form_t *f, double chord, int axis, double fx, doubl
 	s->kxy = -b[5] / (sc * sc);
 	s->wmax = wmax - wmin;
 	double c2 = chord / 2;
-	s->arc = axis ? surface_w(f, 0, 0) - 0.5 * (surface_w(f, 0, -c2) + surface_w(f, 0, c2))
-		      : surface_w(f, 0, 0) - 0.5 * (surface_w(f, -c2, 0) + surface_w(f, c2, 0));
+	s->arc = axis ? surface_w(f, 0, 0, -1) - 0.5 * (surface_w(f, 0, -c2, -1) + surface_w(f, 0, c2, -1))
+		      : surface_w(f, 0, 0, -1) - 0.5 * (surface_w(f, -c2, 0, -1) + surface_w(f, c2, 0, -1));
+	return DEM_OK;
+}
+
+int dem_form_gauge(const dem_form_t *f, double lx, double ly, double *height, dem_error_t *e)
+{
+	const dem_mesh_t *m = f->mesh;
+	double p = lx / 2, q = ly / 2;
+	if (!(p > 0 && q > 0 && p <= m->gx[m->nx] * (1 + 1e-12) && -p >= m->gx[0] * (1 + 1e-12) &&
+	      q <= m->gy[m->ny] * (1 + 1e-12) && -q >= m->gy[0] * (1 + 1e-12)))
+		return dem_error_set(e, DEM_EINPUT, "form: the gauge's balls (a %g x %g rectangle) "
+				     "are not on the plate (%g x %g)", lx, ly, m->gx[m->nx] - m->gx[0],
+				     m->gy[m->ny] - m->gy[0]);
+	/* The face the balls touch: the one opposite the peened top. */
+	double w[4];
+	for (int c = 0; c < 4; c++)
+		w[c] = surface_w(f, c & 1 ? p : -p, c & 2 ? q : -q, 0);
+	/* the plane of the four contacts (least squares: exact when they are
+	 * coplanar): its height at the centre is their mean, its slopes the
+	 * mean differences across the rectangle */
+	double a = 0.25 * (w[0] + w[1] + w[2] + w[3]);
+	double bx = 0.25 * (w[1] - w[0] + w[3] - w[2]) / p;
+	double by = 0.25 * (w[2] - w[0] + w[3] - w[1]) / q;
+	/* the indicator reads along the normal of the plane of the balls */
+	*height = (surface_w(f, 0, 0, 0) - a) / sqrt(1 + bx * bx + by * by);
 	return DEM_OK;
 }
 

@@ -146,6 +146,21 @@ typedef struct dem_form_shape {
 int dem_form_shape(const dem_form_t *f, double chord, int axis, double fx, double fy,
 		   dem_form_shape_t *s, dem_error_t *e);
 
+/* What an Almen gauge (SAE J442) reads on the plate: the plate rests with
+ * the face opposite the peened one (the bottom, z = -h) on four balls at
+ * the corners of an lx x ly rectangle centred on the plate's centre (sides
+ * along x and y), and the indicator touches that face at the centre.
+ * *height is the distance of the face's centre from the plane of the four
+ * contacts (their least-squares plane, exact when they are coplanar),
+ * along its normal; positive when the peened face is convex.  For
+ * w = -(kx x^2 + ky y^2)/2 it is kx lx^2/8 + ky ly^2/8.  The balls are
+ * points at fixed x, y (reference coordinates, also in large strain): a
+ * ball of radius r touches a face of slope s a little off its centre,
+ * which lowers the reading by about r s^2 / 2 (not modelled).  DEM_EINPUT
+ * when the rectangle is not on the plate. */
+int dem_form_gauge(const dem_form_t *f, double lx, double ly, double *height,
+		   dem_error_t *e);
+
 /* The stress through the thickness at the plate centre: the Gauss points of
  * the elements around (0, 0) averaged at each Gauss depth (2 per layer);
  * *n (<= 2 nz) points, depth below the top face, stress (6, Pa; S in large

@@ -492,7 +492,7 @@ out:
 
 /* ---- surface metrics ----------------------------------------------------- */
 
-int dem_surface_compute(const dem_mesh_t *m, const double *u,
+int dem_surface_compute(const dem_mesh_t *m, const double *u, const double *ep,
 			const dem_profile_opts_t *o, dem_surface_t *s,
 			dem_error_t *e)
 {
@@ -519,6 +519,8 @@ int dem_surface_compute(const dem_mesh_t *m, const double *u,
 				continue;
 			double a = (m->gx[i + 1] - m->gx[i]) * (m->gy[j + 1] - m->gy[j]);
 			s->area += a;
+			if (ep && ep[dem_mesh_elem(m, i, j, nz - 1)] > o->ep_threshold)
+				s->plastic += a;
 			for (int c = 0; c < 4; c++) {
 				size_t q = (size_t)(i + (c & 1)) + (size_t)w1 * (size_t)(j + (c >> 1));
 				w[q] += 0.25 * a;
@@ -546,7 +548,8 @@ int dem_surface_compute(const dem_mesh_t *m, const double *u,
 			s->depth_max = d;
 	}
 	s->ra /= s->area;
-	s->coverage = fmin(1, cov / s->area);
+	s->indented = fmin(1, cov / s->area);
+	s->plastic = fmin(1, s->plastic / s->area);
 
 	/* dimples: patches of indented region nodes joined along grid lines */
 	for (size_t q = 0; q < nt; q++)

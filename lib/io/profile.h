@@ -77,6 +77,8 @@ typedef struct dem_profile_opts {
 	double lo[2], hi[2];    /* the region */
 	double bin;             /* > 0: depth bins [k bin, (k+1) bin); 0: element layers */
 	double threshold;       /* surface: indentation (m) that counts as dimpled */
+	double ep_threshold;    /* surface: effective plastic strain that counts
+				 * as covered (the plastic share) */
 } dem_profile_opts_t;
 
 /* One frame's profile: for each element layer (structured mesh only) or
@@ -96,10 +98,14 @@ int dem_profile_compute(const dem_mesh_t *m, const double *sig,
 /* Surface metrics of a frame, over the top faces of the region's top-layer
  * elements (structured mesh only).  The indentation of a top node is -uz;
  * each node stands for a quarter of each region face around it (the
- * trapezoidal rule). */
+ * trapezoidal rule).  The plastic share counts each top face whole, by its
+ * element's effective plastic strain ep (ep NULL: 0). */
 typedef struct dem_surface {
 	double area;            /* top area of the region, m^2 */
-	double coverage;        /* share of it indented deeper than the threshold */
+	double indented;        /* share of it indented deeper than the threshold */
+	double plastic;         /* share of it on top-layer elements whose ep
+				 * exceeds ep_threshold: the FE counterpart of a
+				 * dimpled area (coverage) */
 	double depth_max;       /* deepest indentation, m (0 if none) */
 	double depth_mean;      /* mean of the whole dimples' deepest points, m */
 	double radius;          /* mean of their equivalent radii sqrt(A / pi), m */
@@ -109,7 +115,7 @@ typedef struct dem_surface {
 	size_t patches;         /* every indented patch, cut ones included */
 } dem_surface_t;
 
-int dem_surface_compute(const dem_mesh_t *m, const double *u,
+int dem_surface_compute(const dem_mesh_t *m, const double *u, const double *ep,
 			const dem_profile_opts_t *o, dem_surface_t *s,
 			dem_error_t *e);
 

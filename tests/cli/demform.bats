@@ -48,10 +48,6 @@ closed_kappa() {
 	}' "$1"
 }
 
-value() { awk -v k="$1:" '$1 == k { print $2; exit }' "$2"; }
-
-# |a / b - 1| < tol
-close_to() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { r = a / b - 1; exit !(r < t && r > -t) }'; }
 
 @test "demform --help and --version: stdout, exit 0" {
 	run --separate-stderr demform --help
@@ -68,9 +64,9 @@ close_to() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { r = a / b - 1; exit !(r 
 	[ "$(value elements "$T/sum")" -eq 4500 ]
 	[ "$(value nodes "$T/sum")" -eq 5456 ]
 	k=$(closed_kappa "$T/shape" 0.004)
-	close_to "$(value curvature_x "$T/sum")" "$k" 0.03
-	close_to "$(value curvature_y "$T/sum")" "$k" 0.03
-	close_to "$(value arc_height "$T/sum")" "$(awk -v k="$k" 'BEGIN { print k * 0.15 * 0.15 / 8 }')" 0.03
+	rel_close "$(value curvature_x "$T/sum")" "$k" 0.03
+	rel_close "$(value curvature_y "$T/sum")" "$k" 0.03
+	rel_close "$(value arc_height "$T/sum")" "$(awk -v k="$k" 'BEGIN { print k * 0.15 * 0.15 / 8 }')" 0.03
 	[ "$(value iterations "$T/sum")" -eq 1 ]
 	[ "$(grep -c '^newton: ' "$T/sum")" -eq 2 ]
 	awk '$1 == "residual_rel:" { exit !($2 < 1e-8) }' "$T/sum"
@@ -80,7 +76,7 @@ close_to() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { r = a / b - 1; exit !(r 
 @test "demform --pass 1: half the profile, half the curvature (linear elastic problem)" {
 	demform -s "$T/small.yaml" "$T/prof" > "$T/a" 2>/dev/null
 	demform -s "$T/small.yaml" --pass 1 "$T/prof" > "$T/b" 2>/dev/null
-	close_to "$(value curvature_x "$T/b")" "$(awk -v k="$(value curvature_x "$T/a")" 'BEGIN { printf "%.12g", k / 2 }')" 1e-6
+	rel_close "$(value curvature_x "$T/b")" "$(awk -v k="$(value curvature_x "$T/a")" 'BEGIN { printf "%.12g", k / 2 }')" 1e-6
 }
 
 @test "demform: the same profile on both faces of a symmetric mesh bends nothing; on the bottom only it bends the other way" {
@@ -101,7 +97,7 @@ close_to() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { r = a / b - 1; exit !(r 
 	  step1: {bottom: {}}
 	EOF
 	demform -s "$T/bot.yaml" "$T/prof" > "$T/bot" 2>/dev/null
-	close_to "$(value curvature_x "$T/bot")" "-$(value curvature_x "$T/top")" 1e-6
+	rel_close "$(value curvature_x "$T/bot")" "-$(value curvature_x "$T/top")" 1e-6
 }
 
 @test "demform: two steps report two shapes; the second adds its profile to the first's state" {
@@ -114,14 +110,14 @@ close_to() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { r = a / b - 1; exit !(r 
 	demform -s "$T/small.yaml" "$T/prof" > "$T/one" 2>/dev/null
 	[ "$(grep -c '^step: ' "$T/two")" -eq 2 ]
 	k2=$(awk '$1 == "curvature_x:" { k = $2 } END { print k }' "$T/two")
-	close_to "$k2" "$(value curvature_x "$T/one")" 1e-6
+	rel_close "$k2" "$(value curvature_x "$T/one")" 1e-6
 }
 
 @test "demform --large: agrees with small strain for the 4 mm plate, in equilibrium" {
 	demform -s "$T/small.yaml" "$T/prof" > "$T/s" 2>/dev/null
 	demform -s "$T/small.yaml" --large "$T/prof" > "$T/l" 2>/dev/null
 	grep -qx 'strain: large' "$T/l"
-	close_to "$(value arc_height "$T/l")" "$(value arc_height "$T/s")" 0.01
+	rel_close "$(value arc_height "$T/l")" "$(value arc_height "$T/s")" 0.01
 	awk '$1 == "residual_rel:" { exit !($2 < 1e-8) }' "$T/l"
 	[ "$(value iterations "$T/l")" -gt 1 ]
 }
@@ -158,6 +154,30 @@ close_to() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { r = a / b - 1; exit !(r 
 	awk '!/^#/ { print; exit }' "$T/c" | awk '{ exit !($2 < -1e8 && $4 * $4 < 1e14) }'
 	grep -q 'UnstructuredGrid' "$T/p.vtu"
 	grep -q 'arc_height: ' "$T/sum"
+}
+
+@test "demform: gauge_height, the J442 gauge on the unpeened face, is kx lx^2/8 + ky ly^2/8 of the fitted curvatures; no reading on a plate smaller than the gauge; a rectangle off the plate is bad input" {
+	# balls on grid nodes (10 mm elements): no interpolation in the reading
+	printf 'form: {gauge: [40 mm, 20 mm]}\n' | cat "$T/small.yaml" - > "$T/g.yaml"
+	demform -s "$T/g.yaml" "$T/prof" > "$T/sum" 2>/dev/null
+	[ "$(value gauge "$T/sum")" = 0.04 ]
+	ref=$(awk -v kx="$(value curvature_x "$T/sum")" -v ky="$(value curvature_y "$T/sum")" \
+		'BEGIN { printf "%.12g", kx * 0.04 * 0.04 / 8 + ky * 0.02 * 0.02 / 8 }')
+	rel_close "$(value gauge_height "$T/sum")" "$ref" 0.005
+	# the default rectangle (31.75 x 15.875 mm) fits the 60 x 20 mm plate
+	demform -s "$T/small.yaml" "$T/prof" > "$T/sum" 2>/dev/null
+	grep -qx 'gauge: 0.03175 0.015875' "$T/sum"
+	awk '$1 == "gauge_height:" { n++; ok = $2 > 0 } END { exit !(n == 1 && ok) }' "$T/sum"
+	# a 30 x 10 mm plate: no reading, no error
+	printf 'material: {E: 72 GPa, nu: 0.33}\nplate: {size: [30 mm, 10 mm, 4 mm], element: 5 mm, layers: 4}\n' > "$T/tiny.yaml"
+	demform -s "$T/tiny.yaml" "$T/prof" > "$T/sum" 2>/dev/null
+	grep -q '^arc_height: ' "$T/sum"
+	! grep -q '^gauge' "$T/sum"
+	printf 'form: {gauge: [70 mm, 10 mm]}\n' | cat "$T/small.yaml" - > "$T/bad.yaml"
+	run --separate-stderr demform -s "$T/bad.yaml" -o "$T/o" "$T/prof"
+	[ "$status" -eq 1 ]
+	[[ ${stderr_lines[0]} == "demform: "*"form.gauge"*"larger than the plate"* ]]
+	[ ! -e "$T/o" ]
 }
 
 @test "demform: usage errors" {

@@ -119,7 +119,7 @@ bad_input() {
 	[ "$status" -eq 0 ]
 	[ -z "$stderr" ]
 	[[ ${lines[0]} == "Usage: demprofile "* ]]
-	for o in pass area margin bins bin-size threshold field surface saturation scene output binary gzip dump-scene verbose; do
+	for o in pass area margin bins bin-size threshold plastic-threshold field surface saturation scene output binary gzip dump-scene verbose; do
 		echo "$output" | grep -q -- "--$o" || { echo "--$o missing"; false; }
 	done
 	run --separate-stderr demprofile --version
@@ -239,17 +239,25 @@ bad_input() {
 	bad_input "$T/c.state" "a frame of pass 0 after pass 1"
 }
 
-@test "demprofile --surface: coverage, dimples, Ra of the top face; --threshold" {
-	# the whole top face sunk by 2 um: covered, one patch cut by the edge, Ra 0
+@test "demprofile --surface: indented share, dimples, Ra, plastic coverage of the top face; --threshold, --plastic-threshold" {
+	# the whole top face sunk by 2 um: indented, one patch cut by the edge,
+	# Ra 0; the top layer's ep is 0.002 (state_stream), not above the
+	# default threshold 0.002: plastic coverage 0
 	state_stream 4 4 2 1e-4 1 -2e-6 > "$T/a.state"
 	demprofile --surface "$T/s" "$T/a.state" > /dev/null 2>&1
-	grep -q '^# pass time:s coverage:- depth_max:m depth_mean:m radius:m ra:m dimples:- patches:- area:m^2' "$T/s"
-	[ "$(grep -v '^#' "$T/s")" = "1 0.0001 1 2e-06 0 0 0 0 1 1.6000000000000003e-07" ]
-	demprofile --surface "$T/s" --threshold 3um "$T/a.state" > /dev/null 2>&1
-	[ "$(grep -v '^#' "$T/s" | cut -d' ' -f3,8,9)" = "0 0 0" ]
+	grep -qx '# pass time:s indented:- depth_max:m depth_mean:m radius:m ra:m dimples:- patches:- area:m^2 plastic:-' "$T/s"
+	grep -q '^# region .* threshold 9.9999999999999995e-07 m, plastic threshold 0.002$' "$T/s"
+	[ "$(grep -v '^#' "$T/s")" = "1 0.0001 1 2e-06 0 0 0 0 1 1.6000000000000003e-07 0" ]
+	demprofile --surface "$T/s" --threshold 3um --plastic-threshold 0.0015 "$T/a.state" > /dev/null 2>&1
+	[ "$(grep -v '^#' "$T/s" | cut -d' ' -f3,8,9,11)" = "0 0 0 1" ]
 	# -v: the metrics on stderr
 	run --separate-stderr demprofile -v "$T/a.state"
-	[[ $stderr == *"pass 1 (t = 0.0001 s): 2 depth points; coverage 1,"* ]]
+	[[ $stderr == *"pass 1 (t = 0.0001 s): 2 depth points; plastic coverage 0, indented 1,"* ]]
+	# a threshold out of [0, 1]: a usage error naming the key; in a scene, bad input
+	usage_error demprofile --plastic-threshold 2 "$T/a.state"
+	[[ ${stderr_lines[0]} == *"profile.plastic_threshold"* ]]
+	printf 'profile: {plastic_threshold: -0.1}\n' > "$T/bad.yaml"
+	bad_input "$T/a.state" "plastic_threshold" -s "$T/bad.yaml"
 }
 
 @test "demprofile --saturation: surface and peak values per pass, gnuplot-ready" {

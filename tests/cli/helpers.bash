@@ -39,3 +39,10 @@ profile_stream() {
 		print "# end " 2 * NR
 	}' "$1"
 }
+
+# value KEY FILE: the value of the first "KEY: value" line of FILE (the
+# summaries of demform and demfit).
+value() { awk -v k="$1:" '$1 == k { print $2; exit }' "$2"; }
+
+# rel_close A B TOL: |A / B - 1| < TOL.
+rel_close() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { r = a / b - 1; exit !(r < t && r > -t) }'; }

@@ -886,6 +886,87 @@ static void test_small_large(void **state)
 	assert_true(fabs(arc[1][1] / arc[1][0] - 1) > 0.02);
 }
 
+/* ---- The Almen gauge (issue 25) ------------------------------------------------ */
+
+/* The closed form of a free plate of material (E, nu) under the test
+ * profile scaled by s, equi-biaxial (sxx = syy) or uniaxial (sxx only):
+ * with M = int s z dz (z from the mid-plane), equi-biaxial
+ * kx = ky = -12 (1-nu) M / (E h^3) (DESIGN.md); uniaxial, the moment
+ * balances int sxx z = int syy z = 0 of the plane-stress plate give
+ * kx = -12 M / (E h^3), ky = -nu kx. */
+static void closed_form_mat(double E, double nu, double s, double h, int uniaxial,
+			    double *kx, double *ky)
+{
+	double I0, I1;
+	profile_moments(s, h, &I0, &I1);
+	if (uniaxial) {
+		*kx = -12 * I1 / (E * h * h * h);
+		*ky = -nu * *kx;
+	} else {
+		*kx = *ky = -12 * (1 - nu) * I1 / (E * h * h * h);
+	}
+}
+
+/* Solve the free plate (L x W x h, elements dxy, nz layers graded 1.2) of
+ * (E, nu) under the test profile, equi-biaxial or uniaxial; read the gauge
+ * on the lx x ly rectangle; check it against kx lx^2/8 + ky ly^2/8 of the
+ * closed form and of the curvatures fitted to the solution, within tol. */
+static void gauge_case(double L, double W, double h, double dxy, int nz, double E, double nu,
+		       int uniaxial, double lx, double ly, double tol)
+{
+	job_t j;
+	dem_error_t e = { 0 };
+	dem_plate_t pl = { L, W, h, dxy, nz, 1.2, 0 };
+	dem_mat_param_t mp = { .E = E, .nu = nu };
+	job_init_plate(&j, &pl, &mp);
+	prof_t q;
+	make_profile(&q, 1, 0);
+	if (uniaxial)
+		for (int k = 0; k < NP; k++)
+			q.sig[6 * k + 1] = 0;
+	assert_int_equal(dem_form_profile(j.f, &q.p, &TOP, DEM_FORM_SIGMA, 1, &e), DEM_OK);
+	dem_form_constrain(j.f, NULL, 1);
+	assert_int_equal(dem_form_step(j.f, &j.o, &j.st, &e), DEM_OK);
+	double kx, ky, g;
+	closed_form_mat(E, nu, 1, h, uniaxial, &kx, &ky);
+	assert_int_equal(dem_form_gauge(j.f, lx, ly, &g, &e), DEM_OK);
+	double ref = kx * lx * lx / 8 + ky * ly * ly / 8;
+	dem_form_shape_t sh = job_shape(&j);
+	double fit = sh.kx * lx * lx / 8 + sh.ky * ly * ly / 8;
+	if (getenv("TEST_VERBOSE"))
+		fprintf(stderr, "gauge %g x %g on %g x %g x %g: %.6g m; closed form %.6g (%+.3f %%), "
+			"fitted curvatures %.6g (%+.3f %%); kx %.5g ky %.5g (closed %.5g %.5g)\n",
+			lx, ly, L, W, h, g, ref, 100 * (g / ref - 1), fit, 100 * (g / fit - 1),
+			sh.kx, sh.ky, kx, ky);
+	assert_true(fabs(g / ref - 1) < tol);
+	assert_true(fabs(g / fit - 1) < tol);
+	/* a rectangle off the plate is refused */
+	assert_int_equal(dem_form_gauge(j.f, 1.01 * L, ly, &g, &e), DEM_EINPUT);
+	job_free(&j);
+}
+
+/* Acceptance 1 of issue 25, on the Almen A strip (76.2 x 19.05 x 1.295 mm,
+ * steel: E 210 GPa, nu 0.3) with the J442 default rectangle (31.75 x
+ * 15.875 mm): the reading is kx p^2/2 + ky q^2/2 (p, q the half-sides)
+ * within 0.5 %. */
+static void test_gauge_almen_strip(void **state)
+{
+	(void)state;
+	gauge_case(76.2 * MM, 19.05 * MM, 1.295 * MM, 1.27 * MM, 12, 210e9, 0.3, 0,
+		   31.75 * MM, 15.875 * MM, 0.005);
+}
+
+/* The same on a rectangular plate (60 x 40 x 2 mm, the aluminium of the
+ * tests) with balls on a 40 x 20 mm rectangle; and under a uniaxial profile
+ * (ky = -nu kx: the transverse term subtracts), which tells the two sides
+ * of the rectangle apart. */
+static void test_gauge_plate(void **state)
+{
+	(void)state;
+	gauge_case(60 * MM, 40 * MM, 2 * MM, 2 * MM, 14, E_AL, NU_AL, 0, 40 * MM, 20 * MM, 0.005);
+	gauge_case(60 * MM, 40 * MM, 2 * MM, 2 * MM, 14, E_AL, NU_AL, 1, 40 * MM, 20 * MM, 0.005);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -901,6 +982,8 @@ int main(void)
 		cmocka_unit_test(test_j2_unpeened_face),
 		cmocka_unit_test(test_cutback),
 		cmocka_unit_test(test_small_large),
+		cmocka_unit_test(test_gauge_almen_strip),
+		cmocka_unit_test(test_gauge_plate),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

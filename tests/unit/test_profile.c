@@ -264,7 +264,7 @@ static void test_layers_exact(void **state)
 	make_mesh(&m, NXY, NXY, NZ, GXY, GXY, GZ);
 	alloc_fields(&f, m.ne);
 	layered_fields(&m, &f);
-	dem_profile_opts_t o = {{-1e-3, -1e-3}, {1e-3, 1e-3}, 0, 1e-6};
+	dem_profile_opts_t o = {{-1e-3, -1e-3}, {1e-3, 1e-3}, 0, 1e-6, 0.002};
 	assert_int_equal(dem_profile_compute(&m, f.sig, f.eps, f.ep, &o, &p, &e), 0);
 	assert_int_equal(p.n, NZ);
 	for (size_t i = 0; i < p.n; i++) {
@@ -283,7 +283,7 @@ static void test_layers_exact(void **state)
 	dem_profile_free(&p);
 
 	/* a margin of one element each side: 6 x 6 elements, same values */
-	dem_profile_opts_t o2 = {{-0.75e-3, -0.75e-3}, {0.75e-3, 0.75e-3}, 0, 1e-6};
+	dem_profile_opts_t o2 = {{-0.75e-3, -0.75e-3}, {0.75e-3, 0.75e-3}, 0, 1e-6, 0.002};
 	assert_int_equal(dem_profile_compute(&m, f.sig, f.eps, f.ep, &o2, &p, &e), 0);
 	assert_int_equal(p.count[0], 6 * 6);
 	assert_true(p.sig[0] == layer_value(NZ - 1, 0));
@@ -291,14 +291,14 @@ static void test_layers_exact(void **state)
 
 	/* a region reaching one column of the coarse elements takes their
 	 * 1e12 values in: the mean moves (so the test above could fail) */
-	dem_profile_opts_t o3 = {{-1.25e-3, -1e-3}, {1e-3, 1e-3}, 0, 1e-6};
+	dem_profile_opts_t o3 = {{-1.25e-3, -1e-3}, {1e-3, 1e-3}, 0, 1e-6, 0.002};
 	assert_int_equal(dem_profile_compute(&m, f.sig, f.eps, f.ep, &o3, &p, &e), 0);
 	assert_int_equal(p.count[0], 8 * 8 + 8);
 	assert_true(p.sig[0] > 1e10);
 	dem_profile_free(&p);
 
 	/* an empty region */
-	dem_profile_opts_t o4 = {{0.01, 0.01}, {0.02, 0.02}, 0, 1e-6};
+	dem_profile_opts_t o4 = {{0.01, 0.01}, {0.02, 0.02}, 0, 1e-6, 0.002};
 	assert_int_equal(dem_profile_compute(&m, f.sig, f.eps, f.ep, &o4, &p, &e), DEM_EINPUT);
 	assert_non_null(strstr(e.msg, "no element centroid in the region"));
 	free_fields(&f);
@@ -326,7 +326,7 @@ static void test_layers_and_bins_brute_force(void **state)
 	/* a region that cuts through the graded elements: [-1.6, 0.6] x [-0.4, 1.9] mm */
 	double bins[3] = {0, 0.12e-3, 0.5e-3};
 	for (int b = 0; b < 3; b++) {
-		dem_profile_opts_t o = {{-1.6e-3, -0.4e-3}, {0.6e-3, 1.9e-3}, bins[b], 1e-6};
+		dem_profile_opts_t o = {{-1.6e-3, -0.4e-3}, {0.6e-3, 1.9e-3}, bins[b], 1e-6, 0.002};
 		assert_int_equal(dem_profile_compute(&m, f.sig, f.eps, f.ep, &o, &p, &e), 0);
 		/* brute force, group by group */
 		int ng = b == 0 ? NZ : (int)(2e-3 / bins[b]) + 1;
@@ -432,8 +432,8 @@ static void test_coverage_dimples(void **state)
 		dem_error_t e = {0};
 		make_mesh(&m, n, n, 1, g, g, gz);
 		double *u = dimple_field(&m, R, d0, 4, pitch);
-		dem_profile_opts_t o = {{0, 0}, {4e-3, 4e-3}, 0, t};
-		assert_int_equal(dem_surface_compute(&m, u, &o, &s, &e), 0);
+		dem_profile_opts_t o = {{0, 0}, {4e-3, 4e-3}, 0, t, 0.002};
+		assert_int_equal(dem_surface_compute(&m, u, NULL, &o, &s, &e), 0);
 		double exact = 16 * DEM_PI * rho * rho / (4e-3 * 4e-3);
 		/* brute force: the trapezoid weights of the nodes strictly
 		 * inside a dimpled disk, from geometry alone */
@@ -453,14 +453,14 @@ static void test_coverage_dimples(void **state)
 					cov += w;
 			}
 		cov /= 4e-3 * 4e-3;
-		assert_close(s.coverage, cov, 1e-12);
-		err[q] = fabs(s.coverage - exact);
+		assert_close(s.indented, cov, 1e-12);
+		err[q] = fabs(s.indented - exact);
 		/* a disk of radius rho = 0.315 mm holds about pi (rho/h)^2 nodes,
 		 * rho/h = 12.6 and 25; the nodes' cells cover its area within
 		 * 1 % (measured 0.5 % and 0.15 %; the bound from the cells cut
 		 * by the circle, 2 sqrt(2) h / rho, is 22 % and 11 %) */
 		if (err[q] > 0.01 * exact)
-			fail_msg("n %d: coverage %.6f, exact %.6f", n, s.coverage, exact);
+			fail_msg("n %d: coverage %.6f, exact %.6f", n, s.indented, exact);
 		assert_int_equal(s.dimples, 16);
 		assert_int_equal(s.patches, 16);
 		assert_close(s.depth_mean, d0, 1e-15);   /* centres on nodes */
@@ -482,8 +482,8 @@ static void test_coverage_dimples(void **state)
 	dem_error_t e = {0};
 	make_mesh(&m, n, n, 1, g, g, gz);
 	double *u = dimple_field(&m, R, d0, 4, 0.3e-3);
-	dem_profile_opts_t o = {{0, 0}, {2e-3, 2e-3}, 0, t};
-	assert_int_equal(dem_surface_compute(&m, u, &o, &s, &e), 0);
+	dem_profile_opts_t o = {{0, 0}, {2e-3, 2e-3}, 0, t, 0.002};
+	assert_int_equal(dem_surface_compute(&m, u, NULL, &o, &s, &e), 0);
 	long in = 0, N = 2000;
 	for (long j = 0; j < N; j++)
 		for (long i = 0; i < N; i++) {
@@ -496,7 +496,7 @@ static void test_coverage_dimples(void **state)
 					}
 		}
 	double exact = (double)in / (double)(N * N);
-	assert_close(s.coverage, exact, 0.01 * exact);
+	assert_close(s.indented, exact, 0.01 * exact);
 	assert_int_equal(s.patches, 1);
 	assert_int_equal(s.dimples, 0);         /* it reaches the edge: cut */
 	assert_true(s.radius == 0 && s.depth_mean == 0);
@@ -520,13 +520,64 @@ static void test_roughness(void **state)
 	double *u = calloc(3 * m.nn, sizeof *u);
 	for (size_t q = 0; q < m.nn; q++)
 		u[3 * q + 2] = A * sin(2 * DEM_PI * m.X[3 * q] / L) - 1e-6;  /* plus a sink */
-	dem_profile_opts_t o = {{0, 0}, {2e-3, 1e-3}, 0, 10e-6};
-	assert_int_equal(dem_surface_compute(&m, u, &o, &s, &e), 0);
+	dem_profile_opts_t o = {{0, 0}, {2e-3, 1e-3}, 0, 10e-6, 0.002};
+	assert_int_equal(dem_surface_compute(&m, u, NULL, &o, &s, &e), 0);
 	assert_close(s.ra, 2 * A / DEM_PI, 5e-4 * 2 * A / DEM_PI);
-	assert_true(s.coverage == 0);
+	assert_true(s.indented == 0);
 	assert_int_equal(s.patches, 0);
 	assert_close(s.depth_max, A + 1e-6, 1e-12);
 	free(u);
+	free(g);
+	dem_mesh_free(&m);
+}
+
+/* The plastic share: the top faces of the region's top-layer elements whose
+ * ep exceeds the threshold, by area, against a count by hand: a disk of
+ * plastic top elements, a plastic layer beneath that must not count, one
+ * element at the threshold exactly (not above it), a region that holds
+ * part of the disk; no ep, no share. */
+static void test_plastic_share(void **state)
+{
+	(void)state;
+	const int n = 40;
+	double *g = uniform(0, 4e-3, n), gz[4] = {-0.3e-3, -0.2e-3, -0.1e-3, 0};
+	dem_mesh_t m;
+	dem_surface_t s;
+	dem_error_t e = {0};
+	make_mesh(&m, n, n, 3, g, g, gz);
+	double *u = calloc(3 * m.nn, sizeof *u), *ep = calloc(m.ne, sizeof *ep);
+	assert_non_null(u);
+	assert_non_null(ep);
+	for (int j = 0; j < n; j++)
+		for (int i = 0; i < n; i++) {
+			double xc = 0.5 * (g[i] + g[i + 1]), yc = 0.5 * (g[j] + g[j + 1]);
+			if (hypot(xc - 2e-3, yc - 2e-3) < 1e-3)
+				ep[dem_mesh_elem(&m, i, j, 2)] = 0.01;
+			ep[dem_mesh_elem(&m, i, j, 1)] = 0.05;
+		}
+	ep[dem_mesh_elem(&m, 0, 0, 2)] = 0.002;
+	for (int q = 0; q < 2; q++) {
+		/* q = 1: the region x <= 2 mm, half the disk */
+		dem_profile_opts_t o = {{0, 0}, {q ? 2e-3 : 4e-3, 4e-3}, 0, 1e-6, 0.002};
+		assert_int_equal(dem_surface_compute(&m, u, ep, &o, &s, &e), 0);
+		int cnt = 0, all = 0;
+		for (int j = 0; j < n; j++)
+			for (int i = 0; i < n; i++) {
+				double xc = 0.5 * (g[i] + g[i + 1]), yc = 0.5 * (g[j] + g[j + 1]);
+				if (xc > o.hi[0])
+					continue;
+				all++;
+				cnt += hypot(xc - 2e-3, yc - 2e-3) < 1e-3;
+			}
+		assert_true(cnt > 100);
+		assert_close(s.plastic, (double)cnt / all, 1e-12);
+		assert_close(s.indented, 0, 0);
+	}
+	dem_profile_opts_t o = {{0, 0}, {4e-3, 4e-3}, 0, 1e-6, 0.002};
+	assert_int_equal(dem_surface_compute(&m, u, NULL, &o, &s, &e), 0);
+	assert_close(s.plastic, 0, 0);
+	free(u);
+	free(ep);
 	free(g);
 	dem_mesh_free(&m);
 }
@@ -541,6 +592,7 @@ int main(void)
 		cmocka_unit_test(test_layers_and_bins_brute_force),
 		cmocka_unit_test(test_coverage_dimples),
 		cmocka_unit_test(test_roughness),
+		cmocka_unit_test(test_plastic_share),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }
