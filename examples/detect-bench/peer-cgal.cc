@@ -161,6 +161,8 @@ void read_stream(const char *path, objects &o)
 
 	std::vector<double> v(ncol);
 	auto add = [&]() {
+		if (particles && !(v[cr] >= 0))
+			fail(1, "%s: row %zu: radius %g is not a length", path, o.n + 1, v[cr]);
 		for (int d = 0; d < o.dim; d++) {
 			double lo = particles ? v[ci[d]] - v[cr] : v[ci[d]];
 			double up = particles ? v[ci[d]] + v[cr] : v[hi[d]];
