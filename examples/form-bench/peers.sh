@@ -8,8 +8,8 @@
 #
 # wall_s is the whole process, timed here the same way for both (GNU time):
 # reading the input, building, assembling, solving and writing.  One thread
-# for both: OMP_NUM_THREADS=1 and OPENBLAS_NUM_THREADS=1 for demform, the
-# CCX_NPROC_* variables for ccx (its SPOOLES solver and its element loops).
+# for both: OMP_NUM_THREADS=1 and OPENBLAS_NUM_THREADS=1, and for ccx the
+# CCX_NPROC_* variables (its SPOOLES solver and its element loops).
 # CalculiX works in DIR (it writes JOB.dat, JOB.frd, JOB.sta, ... there).
 set -eu
 demform=$1 scene=$2 profile=$3 inp=$4 dir=$5
@@ -33,7 +33,7 @@ tm=$(grep '^time: ' "$err" | tail -n 1)
 echo "ours $(echo "$tm" | awk '{ split($2, w, "="); split($3, r, "="); printf "wall_s=%s rss_mb=%.1f", w[2], r[2] / 1024 }') arc_height=$arc $cost"
 
 # ccx: one thread everywhere
-(cd "$dir" && /usr/bin/time -f 'time: wall_s=%e rss_kb=%M' env OMP_NUM_THREADS=1 \
+(cd "$dir" && /usr/bin/time -f 'time: wall_s=%e rss_kb=%M' env OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 \
 	CCX_NPROC_EQUATION_SOLVER=1 CCX_NPROC_STIFFNESS=1 CCX_NPROC_RESULTS=1 \
 	ccx -i "$job" > "$job.log" 2>"$err") || { cat "$err" "$dir/$job.log" >&2; exit 1; }
 grep -q 'Job finished' "$dir/$job.log" || { echo "peers.sh: ccx did not finish: see $dir/$job.log" >&2; exit 1; }
