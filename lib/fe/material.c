@@ -823,15 +823,15 @@ unsigned dem_mat_update_batch(const dem_mat_t *m, double dt,
 	VSTORE(wp, zero);
 	if (!(m->flags & DEM_MAT_PLASTIC))
 		return 0;
+	/* the back-stresses turn in every lane, yielding or not */
+	if (m->flags & DEM_MAT_KIN)
+		return batch_general(m, dt, w, sig, ep, kin, wp, (1u << NB) - 1);
 	/* yield check against the static curve (the rate factor is >= 1) */
 	vec p = (s[0] + s[1] + s[2]) / 3;
 	vec a[6] = { s[0] - p, s[1] - p, s[2] - p, s[3], s[4], s[5] };
 	vec q2 = 1.5 * (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) +
 		 3 * (a[3] * a[3] + a[4] * a[4] + a[5] * a[5]);
 	if (m->flags & DEM_MAT_GENERAL) {
-		const unsigned all = (1u << NB) - 1;
-		if (m->flags & DEM_MAT_KIN)   /* the back-stresses turn in every lane */
-			return batch_general(m, dt, w, sig, ep, kin, wp, all);
 		/* without back-stresses a lane below the curve's floor is
 		 * elastic: the general return (which would find it so) is left
 		 * to the others.  The floor is lowered by a relative 1e-12, far
