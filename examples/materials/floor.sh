@@ -12,6 +12,7 @@
 set -eu
 base=$1 dir=$2
 top=$(cd "$(dirname "$0")/../.." && pwd)
+. "$top/examples/lib.sh"
 rounds=${ROUNDS:-2}
 threads=${THREADS:-2}
 mkdir -p "$dir"
@@ -31,7 +32,6 @@ grep -q '^  passes: 1$' "$dir/jc.yaml" && grep -q '^  use: Al7075-T651-jc' "$dir
 	{ echo "floor.sh: airbus-strip/scene.yaml changed shape" >&2; exit 1; }
 "$top/bin/dempack" -s "$dir/linear.yaml" shots --speed 36 > "$dir/shots.txt" 2>/dev/null
 printf 'code\tround\tlaw\twall_s\tsteps\tns_per_elem_cycle\telement_loop_s\tsame\n'
-data() { gzip -dc "$1" | sed '1,/^# data$/d' | cksum; }
 i=0
 while [ "$i" -lt "$rounds" ]; do
 	for law in jc linear; do
@@ -41,11 +41,9 @@ while [ "$i" -lt "$rounds" ]; do
 			DEM_SHARE=$top/share "$bin" -s "$dir/$law.yaml" --threads "$threads" \
 				-o "$dir/$law-$v.state" "$dir/shots.txt" 2> "$dir/$law-$v.log"
 			same=1
-			[ "$v" = this ] && [ "$(data "$dir/$law-$v.state")" != "$(data "$dir/$law-base.state")" ] && same=0
-			awk -v c="$v" -v r="$i" -v l="$law" -v s="$same" '/^demshot: cost: / {
-				for (k = 3; k <= NF; k++) { split($k, kv, "="); f[kv[1]] = kv[2] }
-				printf "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n", c, r, l, f["wall_s"], f["steps"],
-					f["ns_per_elem_cycle"], f["element_loop_s"], s }' "$dir/$law-$v.log"
+			[ "$v" = this ] && [ "$(state_rows "$dir/$law-$v.state")" != "$(state_rows "$dir/$law-base.state")" ] && same=0
+			printf '%s\t%s\t%s\t%s\t%s\n' "$v" "$i" "$law" \
+				"$(cost_field "$dir/$law-$v.log" wall_s steps ns_per_elem_cycle element_loop_s)" "$same"
 		done
 	done
 	i=$((i + 1))

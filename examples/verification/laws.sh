@@ -30,28 +30,29 @@ table() {   # file heading
 			for (i = 5; i < NF; i++) { v = $i; gsub(/ /, "", v); printf "\t%s", v }
 			printf "\n" }' "$1"
 }
+# pair HEADING PRINT: the cases of both reports' tables under HEADING, the
+# awk statement PRINT run on each with o[] the Table 7.2 row's fields, $0 the
+# library row's and k[] the case's alloy, d, angle
+pair() {
+	table "$base" "$1" > /tmp/laws-base-$$.tsv
+	table "$laws" "$1" | awk -F'\t' -v b=/tmp/laws-base-$$.tsv '
+		BEGIN { while ((getline l < b) > 0) { split(l, f, "\t"); r[f[1]] = l } }
+		($1 in r) { split(r[$1], o, "\t"); split($1, k, "-"); '"$2"' }'
+	rm -f /tmp/laws-base-$$.tsv
+}
 echo "## After 200 % coverage"
 echo
 echo "| alloy | d | angle | sxx surface T7.2 / lib | sxx peak T7.2 / lib | change of peak | 5 % peak at T7.2 / lib | ep surface T7.2 / lib |"
 echo "|---|---:|---:|---:|---:|---:|---:|---:|"
-table "$base" "Residual stress" > /tmp/laws-base-$$.tsv
-table "$laws" "Residual stress" | awk -F'\t' -v b=/tmp/laws-base-$$.tsv '
-	BEGIN { while ((getline l < b) > 0) { split(l, f, "\t"); r[f[1]] = l } }
-	($1 in r) { split(r[$1], o, "\t"); split($1, k, "-")
-		printf "| %s | %s | %s | %s / %s | %s / %s | %+.0f %% | %s / %s | %s / %s |\n", k[1], k[2], k[3],
-			o[3], $3, o[4], $4, 100 * ($4 / o[4] - 1), o[7], $7, o[11], $11 }'
+pair "Residual stress" 'printf "| %s | %s | %s | %s / %s | %s / %s | %+.0f %% | %s / %s | %s / %s |\n", k[1], k[2], k[3],
+	o[3], $3, o[4], $4, 100 * ($4 / o[4] - 1), o[7], $7, o[11], $11'
 echo
 echo "## Dimple of a single impact"
 echo
 echo "| alloy | d | angle | radius T7.2 / lib | change | depth (um) T7.2 / lib | fully plastic (static yield) |"
 echo "|---|---:|---:|---:|---:|---:|---:|"
-table "$base" "Dimple of a single impact" > /tmp/laws-base-$$.tsv
-table "$laws" "Dimple of a single impact" | awk -F'\t' -v b=/tmp/laws-base-$$.tsv '
-	BEGIN { while ((getline l < b) > 0) { split(l, f, "\t"); r[f[1]] = l } }
-	($1 in r) { split(r[$1], o, "\t"); split($1, k, "-")
-		printf "| %s | %s | %s | %s / %s | %+.1f %% | %s / %s | %s |\n", k[1], k[2], k[3],
-			o[2], $2, 100 * ($2 / o[2] - 1), o[7], $7, $6 }'
-rm -f /tmp/laws-base-$$.tsv
+pair "Dimple of a single impact" 'printf "| %s | %s | %s | %s / %s | %+.1f %% | %s / %s | %s |\n", k[1], k[2], k[3],
+	o[2], $2, 100 * ($2 / o[2] - 1), o[7], $7, $6'
 echo
 echo "The fully plastic radius uses the static yield stress of the run's material"
 echo "(A for Johnson-Cook), so it moves with the law too."
