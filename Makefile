@@ -3,6 +3,7 @@
 #   make            build the library and the programs
 #   make check      build and run every test; ends with "N passed, N failed"
 #   make check SANITIZE=1   the same under AddressSanitizer and UBSan
+#   make check CC=clang     the same built by clang (in build/rel-clang)
 #   make demo       set up and run the main job on a bundled scene
 #   make deps       install the Debian packages the build needs (as root)
 
@@ -12,12 +13,20 @@ CC       ?= cc
 DATADIR  ?= /usr/local/share/dem
 PKGS     := gsl yaml-0.1 zlib
 
+# a compiler other than the default builds beside it, never over it
+COMPILER := $(if $(findstring clang,$(notdir $(firstword $(CC)))),clang,)
+SAN      := $(filter 1,$(SANITIZE))
 ifeq ($(SANITIZE),1)
 BUILD    := build/san
 OPT      := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all
 else
 BUILD    := build/rel
 OPT      := -O2 -g
+endif
+ifeq ($(COMPILER),clang)
+BUILD    := $(BUILD)-clang
+# valgrind 3.19 (Debian 12) does not read clang's default DWARF 5
+OPT      += -gdwarf-4
 endif
 
 CFLAGS   := -std=c11 -Wall -Wextra -Werror $(OPT) -D_POSIX_C_SOURCE=200809L \
@@ -35,7 +44,7 @@ PROGS    := $(CMD_SRC:cmd/%.c=$(BUILD)/bin/%)
 TEST_SRC := $(sort $(wildcard tests/unit/test_*.c))
 TESTS    := $(TEST_SRC:tests/unit/%.c=$(BUILD)/tests/%)
 
-ifeq ($(SANITIZE),1)
+ifneq ($(SAN)$(COMPILER),)
 LIBDEM   := $(BUILD)/lib/libdem.a
 BINDIR   := $(BUILD)/bin
 else
@@ -67,7 +76,7 @@ $(BUILD)/bin/%: $(BUILD)/cmd/%.o $(LIBDEM)
 	@mkdir -p $(@D)
 	$(CC) $(LDFLAGS) $< $(LIBDEM) $(LDLIBS) -o $@
 
-ifneq ($(SANITIZE),1)
+ifeq ($(SAN)$(COMPILER),)
 bin/%: $(BUILD)/bin/%
 	@mkdir -p bin
 	cp $< $@.tmp && mv -f $@.tmp $@

@@ -50,6 +50,14 @@
 typedef double vec4 __attribute__((vector_size(4 * sizeof(double))));
 
 typedef long long lvec4 __attribute__((vector_size(4 * sizeof(double))));
+/* Lanes i0..i3 of the 8-lane concatenation (a, b), the indices constant:
+ * __builtin_shufflevector in clang and GCC >= 12, __builtin_shuffle with a
+ * mask vector in older GCC */
+#if defined(__clang__) || (defined(__GNUC__) && __GNUC__ >= 12)
+#define SHUF4(a, b, i0, i1, i2, i3) __builtin_shufflevector(a, b, i0, i1, i2, i3)
+#else
+#define SHUF4(a, b, i0, i1, i2, i3) __builtin_shuffle(a, b, (lvec4){ i0, i1, i2, i3 })
+#endif
 /* an unaligned vector in memory: one whole-vector load or store (GCC
  * splits a memcpy of 32 bytes in halves, which a whole-vector access then
  * fails to forward from) */
@@ -607,23 +615,19 @@ static inline void rotate_strain(double e[6], double a, double b, double c)
  * and back */
 static inline void aos_soa(vec4 a[3])
 {
-	const lvec4 m0 = { 0, 3, 6, 7 }, m1 = { 1, 4, 7, 4 }, m2 = { 2, 5, 5, 5 };
-	const lvec4 n0 = { 0, 1, 2, 5 }, n1 = { 0, 1, 2, 6 }, n2 = { 0, 1, 4, 7 };
-	vec4 x = __builtin_shuffle(a[0], a[1], m0), y = __builtin_shuffle(a[0], a[1], m1);
-	vec4 z = __builtin_shuffle(a[0], a[1], m2);
-	a[0] = __builtin_shuffle(x, a[2], n0);
-	a[1] = __builtin_shuffle(y, a[2], n1);
-	a[2] = __builtin_shuffle(z, a[2], n2);
+	vec4 x = SHUF4(a[0], a[1], 0, 3, 6, 7), y = SHUF4(a[0], a[1], 1, 4, 7, 4);
+	vec4 z = SHUF4(a[0], a[1], 2, 5, 5, 5);
+	a[0] = SHUF4(x, a[2], 0, 1, 2, 5);
+	a[1] = SHUF4(y, a[2], 0, 1, 2, 6);
+	a[2] = SHUF4(z, a[2], 0, 1, 4, 7);
 }
 
 static inline void soa_aos(vec4 a[3])
 {
-	const lvec4 m0 = { 0, 4, 1, 5 }, m1 = { 1, 5, 2, 6 }, m2 = { 3, 7, 2, 6 };
-	const lvec4 n0 = { 0, 1, 4, 2 }, n1 = { 0, 1, 6, 2 }, n2 = { 6, 0, 1, 7 };
-	vec4 t = __builtin_shuffle(a[0], a[1], m0), u = __builtin_shuffle(a[1], a[2], m1);
-	vec4 w = __builtin_shuffle(a[0], a[1], m2);
-	vec4 o0 = __builtin_shuffle(t, a[2], n0), o1 = __builtin_shuffle(u, a[0], n1);
-	vec4 o2 = __builtin_shuffle(w, a[2], n2);
+	vec4 t = SHUF4(a[0], a[1], 0, 4, 1, 5), u = SHUF4(a[1], a[2], 1, 5, 2, 6);
+	vec4 w = SHUF4(a[0], a[1], 3, 7, 2, 6);
+	vec4 o0 = SHUF4(t, a[2], 0, 1, 4, 2), o1 = SHUF4(u, a[0], 0, 1, 6, 2);
+	vec4 o2 = SHUF4(w, a[2], 6, 0, 1, 7);
 	a[0] = o0, a[1] = o1, a[2] = o2;
 }
 
@@ -756,7 +760,6 @@ static inline __attribute__((always_inline)) void slab_1pt(dem_fe_t *fe, slab_t 
 			/* the pairs of nodes I, J = I + 1 along the row: nodes
 			 * n..n+4, each added to once (no store is read back) */
 			static const int lo[4] = { 0, 3, 4, 7 }, hi[4] = { 1, 2, 5, 6 };
-			const lvec4 sh = { 4, 0, 1, 2 };
 			const vec4 zero = { 0 };
 			for (int p = 0; p < 4; p++) {
 				size_t n0 = 3 * (size_t)h[0][lo[p]];
@@ -769,7 +772,7 @@ static inline __attribute__((always_inline)) void slab_1pt(dem_fe_t *fe, slab_t 
 					const double *p0 = fb + (8 * c + lo[p]) * NB, *p1 = fb + (8 * c + hi[p]) * NB;
 					vec4 f0 = { p0[0], p0[1], p0[2], p0[3] };
 					vec4 f1 = { p1[0], p1[1], p1[2], p1[3] };
-					Fv[c] = f0 + __builtin_shuffle(f1, zero, sh);
+					Fv[c] = f0 + SHUF4(f1, zero, 4, 0, 1, 2);
 					last[c] = f1[3];
 				}
 				soa_aos(Fv);
