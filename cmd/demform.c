@@ -18,6 +18,9 @@
 
 #include <gsl/gsl_errno.h>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 #include "core/cli.h"
 #include "core/cost.h"
 #include "fe/fescene.h"
@@ -29,7 +32,7 @@
 #define PROG "demform"
 #define MAXSTEP 9
 
-enum { OPT_LARGE = DEM_OPT_PROGRAM, OPT_INCREMENTS, OPT_INIT, OPT_CENTRE, OPT_PASS, OPT_VTU };
+enum { OPT_LARGE = DEM_OPT_PROGRAM, OPT_INCREMENTS, OPT_INIT, OPT_CENTRE, OPT_PASS, OPT_VTU, OPT_THREADS };
 
 static const dem_opt_t options[] = {
 	{"large", OPT_LARGE, NULL, "large strain (geometric nonlinearity; sets form.strain: large)"},
@@ -38,6 +41,7 @@ static const dem_opt_t options[] = {
 	{"pass", OPT_PASS, "N", "use pass N of the profile stream (form.pass; default the last)"},
 	{"centre", OPT_CENTRE, "FILE", "write the stress through the thickness at the plate centre to FILE"},
 	{"vtu", OPT_VTU, "FILE", "write the formed plate (displacements, element stresses) as VTK XML to FILE"},
+	{"threads", OPT_THREADS, "N", "threads of the assembly and of an OpenBLAS factorisation (default: OMP_NUM_THREADS or all)"},
 	DEM_OPTS_COMMON,
 	{0}
 };
@@ -59,6 +63,7 @@ struct cmdline {
 	const char *input;
 	const char *centre;
 	const char *vtu;
+	unsigned long threads;
 };
 
 static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
@@ -80,6 +85,7 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 		case OPT_PASS: dem_common_override(m, "form.pass", optarg, "--pass"); break;
 		case OPT_CENTRE: cl->centre = optarg; break;
 		case OPT_VTU: cl->vtu = optarg; break;
+		case OPT_THREADS: dem_cli_ulong(&c, "--threads", optarg, 1, 1024, &cl->threads); break;
 		default: break;
 		}
 	}
@@ -411,6 +417,7 @@ int main(int argc, char **argv)
 		dem_common_free(&cl.com);
 		return rc;
 	}
+	int blas = dem_form_threads((int)cl.threads);
 	if ((rc = dem_scene_load(&scene, cl.com.scene, &e)) ||
 	    (rc = dem_scene_override_all(scene, cl.com.ov, cl.com.nov, &e)) ||
 	    (rc = dem_scene_material(scene, 0, &mat, &e)) ||
@@ -507,6 +514,10 @@ int main(int argc, char **argv)
 	dem_cost_count(&cost, "iterations", st.iterations);
 	dem_cost_count(&cost, "factorisations", st.factorisations);
 	dem_cost_count(&cost, "factor_nnz", st.lnz);
+#ifdef _OPENMP
+	dem_cost_count(&cost, "threads", omp_get_max_threads());
+#endif
+	dem_cost_count(&cost, "blas_threads", blas);
 done:
 	rc = 0;
 out:

@@ -1,12 +1,16 @@
 /* implicit.c - the implicit static stage of peen forming (see implicit.h). */
 #include "fe/implicit.h"
 
+#include <dlfcn.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include <cholmod.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include "core/cost.h"
 #include "fe/hex8_large.h"
@@ -356,37 +360,61 @@ static int assemble(dem_form_t *f, const dem_form_opts_t *o, int tangent, double
 	memset(f->R, 0, 3 * f->nn * sizeof *f->R);
 	if (tangent)
 		memset(f->A->x, 0, (size_t)((int *)f->A->p)[f->neq] * sizeof(double));
-	int eas = o->rule == DEM_HEX8_EAS;
-	for (size_t el = 0; el < f->ne; el++) {
-		const uint32_t *nd = m->hex + 8 * el;
-		double X[24], du[24], un[24], fint[24], K[576];
-		dem_mesh_gather(m, el, NULL, X);
-		for (int I = 0; I < 8; I++)
-			for (int i = 0; i < 3; i++) {
-				size_t d = 3 * (size_t)nd[I] + i;
-				un[8 * i + I] = f->un[d];
-				du[8 * i + I] = f->u[d] - f->un[d];
+	const int eas = o->rule == DEM_HEX8_EAS;
+	/* Eight colours by the parity of (i, j, k): two elements of a colour
+	 * share no node, so a colour's elements add into R and A in parallel
+	 * without a race, and the sums are the same bit for bit on any number
+	 * of threads (each entry receives its elements in colour order). */
+	for (int c = 0; c < 8; c++) {
+		const int i0 = c & 1, j0 = c >> 1 & 1, k0 = c >> 2 & 1;
+		const int ni = (m->nx - i0 + 1) / 2, nj = (m->ny - j0 + 1) / 2, nk = (m->nz - k0 + 1) / 2;
+		const long nrow = (long)nj * nk;
+		size_t first = SIZE_MAX;
+		int frc = 0;
+#pragma omp parallel for schedule(dynamic, 4) if (nrow * ni >= 256)
+		for (long r = 0; r < nrow; r++) {
+			const int j = j0 + 2 * (int)(r % nj), k = k0 + 2 * (int)(r / nj);
+			for (int i = i0; i < m->nx; i += 2) {
+				const size_t el = dem_mesh_elem(m, i, j, k);
+				const uint32_t *nd = m->hex + 8 * el;
+				double X[24], du[24], un[24], fint[24], K[576];
+				dem_mesh_gather(m, el, NULL, X);
+				for (int I = 0; I < 8; I++)
+					for (int d = 0; d < 3; d++) {
+						size_t q = 3 * (size_t)nd[I] + d;
+						un[8 * d + I] = f->un[q];
+						du[8 * d + I] = f->u[q] - f->un[q];
+					}
+				int rc = o->large
+					? dem_hex8_large(f->mat, eas, X, un, du, &f->hs[el], &f->ht[el], fint,
+							 tangent == 1 ? K : NULL, NULL)
+					: dem_hex8_static(f->mat, o->rule, X, du, &f->hs[el], &f->ht[el], fint,
+							  tangent ? K : NULL, NULL);
+				if (!rc && tangent == 2) {
+					static const double zero[24];
+					dem_hex8_hist_t hk = f->hc[el];
+					double fk[24];
+					rc = dem_hex8_large(f->mat, eas, X, un, zero, &f->hc[el], &hk, fk, K, NULL);
+				}
+				if (rc) {
+#pragma omp critical(form_bad)
+					if (el < first) {
+						first = el;
+						frc = rc;
+					}
+					continue;
+				}
+				for (int I = 0; I < 8; I++)
+					for (int d = 0; d < 3; d++)
+						f->R[3 * (size_t)nd[I] + d] -= fint[8 * d + I];
+				if (tangent)
+					scatter(f, nd, K);
 			}
-		int rc = o->large
-			? dem_hex8_large(f->mat, eas, X, un, du, &f->hs[el], &f->ht[el], fint,
-					 tangent == 1 ? K : NULL, NULL)
-			: dem_hex8_static(f->mat, o->rule, X, du, &f->hs[el], &f->ht[el], fint,
-					  tangent ? K : NULL, NULL);
-		if (!rc && tangent == 2) {
-			static const double zero[24];
-			dem_hex8_hist_t hk = f->hc[el];
-			double fk[24];
-			rc = dem_hex8_large(f->mat, eas, X, un, zero, &f->hc[el], &hk, fk, K, NULL);
 		}
-		if (rc) {
-			*bad = el;
-			return rc;
+		if (frc) {   /* the lowest failing element of the first colour with one */
+			*bad = first;
+			return frc;
 		}
-		for (int I = 0; I < 8; I++)
-			for (int i = 0; i < 3; i++)
-				f->R[3 * (size_t)nd[I] + i] -= fint[8 * i + I];
-		if (tangent)
-			scatter(f, nd, K);
 	}
 	double s = 0;
 	for (size_t d = 0; d < 3 * f->nn; d++)
@@ -407,6 +435,33 @@ static void start_increment(dem_form_t *f, double dlam)
 				f->hs[el].sig[k] += dlam * f->sbar[48 * el + k];
 		memcpy(f->ht[el].alpha, f->hs[el].alpha, sizeof f->ht[el].alpha);
 	}
+}
+
+int dem_form_threads(int n)
+{
+	/* OpenBLAS's own calls, looked up in the running program (Debian
+	 * switches libblas.so.3 between BLAS builds); none in another BLAS */
+	void *self = dlopen(NULL, RTLD_LAZY);
+	void (*set)(int) = NULL;
+	int (*get)(void) = NULL, (*par)(void) = NULL;
+	if (self) {
+		*(void **)&set = dlsym(self, "openblas_set_num_threads");
+		*(void **)&get = dlsym(self, "openblas_get_num_threads");
+		*(void **)&par = dlsym(self, "openblas_get_parallel");
+	}
+	if (n > 0) {
+#ifdef _OPENMP
+		omp_set_num_threads(n);
+#endif
+		if (set)
+			set(n);
+	}
+	/* a sequential build (openblas_get_parallel() 0) keeps to one thread
+	 * whatever it was told */
+	int blas = get ? (par && par() == 0 ? 1 : get()) : 0;
+	if (self)
+		dlclose(self);
+	return blas;
 }
 
 int dem_form_step(dem_form_t *f, const dem_form_opts_t *o, dem_form_stats_t *st,

@@ -112,6 +112,13 @@ int dem_form_profile(dem_form_t *f, const dem_profile_t *p, const dem_form_regio
  * edge: y z; the centre of the +y edge: z), which leaves a free plate free. */
 void dem_form_constrain(dem_form_t *f, const dem_bc_t bc[6], int minimal);
 
+/* Threads of the static stage: n > 0 sets the OpenMP threads of the
+ * assembly and, when the BLAS under CHOLMOD is OpenBLAS (found at run time
+ * by its openblas_set_num_threads), its threads too; n <= 0 changes
+ * nothing.  Returns the BLAS's threads after the call (1 for a sequential
+ * OpenBLAS), 0 when the BLAS is not OpenBLAS (its threads unknown). */
+int dem_form_threads(int n);
+
 /* Solve one step: lambda from 0 to 1 in o->ninc increments, cut back on
  * divergence.  st accumulates (zero it before the first step).  Returns
  * DEM_OK, or DEM_ENUMERIC when the step cannot be completed (the model

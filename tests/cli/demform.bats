@@ -180,7 +180,17 @@ closed_kappa() {
 	[ ! -e "$T/o" ]
 }
 
+@test "demform --threads: 1 and 2 threads give the same summary bit for bit on the Ch. 8.6 strip (coloured assembly, 560 elements a colour); the cost line says how many" {
+	demform --threads 1 -s "$T/el.yaml" -o "$T/s1" "$T/prof" 2> "$T/e1"
+	demform --threads 2 -s "$T/el.yaml" -o "$T/s2" "$T/prof" 2> "$T/e2"
+	cmp "$T/s1" "$T/s2"
+	tail -n 1 "$T/e1" | grep -q ' threads=1 blas_threads=[01]$'
+	tail -n 1 "$T/e2" | grep -q ' threads=2 blas_threads=[0-2]$'
+}
+
 @test "demform: usage errors" {
+	usage_error demform --threads 0 "$T/prof"
+	usage_error demform --threads x "$T/prof"
 	usage_error demform -b "$T/prof"
 	usage_error demform --bogus
 	usage_error demform a b
