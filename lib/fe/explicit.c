@@ -100,7 +100,13 @@ struct dem_fe {
 	size_t nblk;
 	double *sig, *ep, *Qs, *eps, *kdt;
 	double *kin;          /* back-stresses, [6 nkin][NB] per batch (NULL: none) */
+	double *syc;          /* each point's static flow stress as last seen by the
+			       * general return, beside ep (dem_mat_update_batch;
+			       * NULL: a law with a closed-form return, or
+			       * back-stresses); not checkpointed: reset to the
+			       * floor of the curve on load */
 	int nh;               /* dem_mat_nhist */
+	size_t npt;           /* points in syc (0: none) */
 	uint8_t *run;         /* one-point block whose element e has the nodes
 			       * of element 0 plus e (a run along a row) */
 	int hg;               /* hourglass control on */
@@ -186,7 +192,7 @@ void dem_fe_free(dem_fe_t *fe)
 	if (fe->pmass != fe->mass)
 		free(fe->pmass);
 	free(fe->sig), free(fe->ep), free(fe->Qs), free(fe->eps), free(fe->kdt);
-	free(fe->kin);
+	free(fe->kin), free(fe->syc);
 	free(fe->run);
 	free(fe->slab), free(fe->slab_of_k);
 	for (int i = 0; i < fe->npl; i++)
@@ -253,6 +259,14 @@ static void tie_scatter(dem_fe_t *fe)
 			fe->x[s + c] = fe->x[ms + c] + fe->toff[3 * t + c];
 		}
 	}
+}
+
+/* Every point's flow-stress record at the floor of the curve, which is
+ * never above sigma_y(ep): the first general return of each point sets it. */
+static void syc_reset(dem_fe_t *fe)
+{
+	for (size_t i = 0; i < fe->npt; i++)
+		fe->syc[i] = fe->mat->sy_floor;
 }
 
 int dem_fe_create(dem_fe_t **out, const dem_mesh_t *mesh, const dem_mat_t *mat,
@@ -340,8 +354,13 @@ int dem_fe_create(dem_fe_t **out, const dem_mesh_t *mesh, const dem_mat_t *mat,
 			fe->kdt = calloc(ne, sizeof *fe->kdt);
 		}
 	}
+	if ((mat->flags & DEM_MAT_GENERAL) && !fe->nh) {
+		fe->npt = o->rule == DEM_FE_1PT ? nblk * NB : ne * 2 * NB;
+		if ((fe->syc = malloc(fe->npt * sizeof *fe->syc)))
+			syc_reset(fe);
+	}
 	if (!fe->sig || !fe->ep || (fe->nh && !fe->kin) || (o->rule == DEM_FE_1PT && (!fe->Qs || !fe->run)) ||
-	    (o->large && (!fe->eps || !fe->kdt)))
+	    (o->large && (!fe->eps || !fe->kdt)) || (fe->npt && !fe->syc))
 		goto nomem;
 
 	/* masses, element steps and their shape factors */
@@ -711,7 +730,8 @@ static inline __attribute__((always_inline)) void slab_1pt(dem_fe_t *fe, slab_t 
 		for (int k = 0; k < 6; k++)
 			s0[k] = *(const uvec4 *)(sg + k * NB);
 		double *kn = fe->kin ? fe->kin + B * (size_t)fe->nh * NB : NULL;
-		unsigned pm = dem_mat_update_batch(m, dt, b.d[0], large ? b.w[0] : NULL, sg, ep, kn, wp);
+		unsigned pm = dem_mat_update_batch(m, dt, b.d[0], large ? b.w[0] : NULL, sg, ep, kn, wp,
+						   fe->syc ? fe->syc + B * NB : NULL);
 		/* energies of the lanes (vector across the batch) */
 		vec4 vol, dE = { 0 }, q[12];
 		vol = *(const uvec4 *)(b.vol);
@@ -885,7 +905,7 @@ static inline __attribute__((always_inline)) void slab_full(dem_fe_t *fe, slab_t
 			pm |= dem_mat_update_batch(m, dt, D[q], large ? W[q] : NULL, sg + q * 6 * NB,
 						   ep + q * NB,
 						   fe->kin ? fe->kin + (el * 2 + (size_t)q) * (size_t)fe->nh * NB : NULL,
-						   wp[q]) << (NB * q);
+						   wp[q], fe->syc ? fe->syc + (el * 2 + (size_t)q) * NB : NULL) << (NB * q);
 		double sp[48], dm[6] = { 0 }, wm[3] = { 0 };
 		for (int p = 0; p < 8; p++) {
 			int q = p / NB, l = p % NB;
@@ -1378,5 +1398,6 @@ int dem_fe_load(dem_fe_t *fe, FILE *f, dem_error_t *e)
 	if (crc != (uint32_t)c)
 		return dem_error_set(e, DEM_EINPUT, "checkpoint: corrupt (checksum mismatch)");
 	fe->failed = 0;
+	syc_reset(fe);
 	return DEM_OK;
 }

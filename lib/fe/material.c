@@ -747,7 +747,8 @@ int dem_mat_update_general(const dem_mat_t *m, const double deps[6], double dt,
  * lane yields or not. */
 static unsigned batch_general(const dem_mat_t *m, double dt, const double *restrict w,
 			      double *restrict sig, double *restrict ep,
-			      double *restrict kin, double *restrict wp, unsigned todo)
+			      double *restrict kin, double *restrict wp,
+			      double *restrict syc, unsigned todo)
 {
 	const int nh = dem_mat_nhist(m);
 	unsigned mask = 0;
@@ -773,6 +774,10 @@ static unsigned batch_general(const dem_mat_t *m, double dt, const double *restr
 		}
 		for (int j = 0; j < nh; j++)
 			kin[j * NB + l] = a[j];
+		if (syc) {   /* the static flow stress at the lane's end state */
+			double h;
+			syc[l] = iso_flow(m, ep[l], &h);
+		}
 	}
 	return mask;
 }
@@ -784,7 +789,8 @@ SIMD_CLONES
 unsigned dem_mat_update_batch(const dem_mat_t *m, double dt,
 			      const double *restrict d, const double *restrict w,
 			      double *restrict sig, double *restrict ep,
-			      double *restrict kin, double *restrict wp)
+			      double *restrict kin, double *restrict wp,
+			      double *restrict syc)
 {
 	vec s[6], e[6];
 	for (int k = 0; k < 6; k++) {
@@ -825,24 +831,26 @@ unsigned dem_mat_update_batch(const dem_mat_t *m, double dt,
 		return 0;
 	/* the back-stresses turn in every lane, yielding or not */
 	if (m->flags & DEM_MAT_KIN)
-		return batch_general(m, dt, w, sig, ep, kin, wp, (1u << NB) - 1);
+		return batch_general(m, dt, w, sig, ep, kin, wp, NULL, (1u << NB) - 1);
 	/* yield check against the static curve (the rate factor is >= 1) */
 	vec p = (s[0] + s[1] + s[2]) / 3;
 	vec a[6] = { s[0] - p, s[1] - p, s[2] - p, s[3], s[4], s[5] };
 	vec q2 = 1.5 * (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) +
 		 3 * (a[3] * a[3] + a[4] * a[4] + a[5] * a[5]);
 	if (m->flags & DEM_MAT_GENERAL) {
-		/* without back-stresses a lane below the curve's floor is
-		 * elastic: the general return (which would find it so) is left
-		 * to the others.  The floor is lowered by a relative 1e-12, far
-		 * above the rounding by which this q2 and the return's differ,
-		 * so that the result is the same bit for bit. */
-		double fl = m->sy_floor * m->sy_floor * (1 - 1e-12);
+		/* without back-stresses a lane below its static flow stress (syc,
+		 * or the curve's floor when there is no record) is elastic: the
+		 * general return (which would find it so) is left to the others.
+		 * The bound is lowered by a relative 1e-12, far above the
+		 * rounding by which this q2 and the return's differ, so that the
+		 * result is the same bit for bit. */
 		unsigned todo = 0;
-		for (int l = 0; l < NB; l++)
-			if (!(q2[l] <= fl))
+		for (int l = 0; l < NB; l++) {
+			double c = syc ? syc[l] : m->sy_floor;
+			if (!(q2[l] <= c * c * (1 - 1e-12)))
 				todo |= 1u << l;
-		return todo ? batch_general(m, dt, w, sig, ep, kin, wp, todo) : 0;
+		}
+		return todo ? batch_general(m, dt, w, sig, ep, kin, wp, syc, todo) : 0;
 	}
 	vec sy, hs, e0;
 	VLOAD(e0, ep);

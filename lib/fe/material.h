@@ -217,13 +217,23 @@ int dem_mat_update(const dem_mat_t *m, const double deps[6], double dt,
  * point.  wp receives the plastic work per unit volume; returns a bit mask
  * of the plastic lanes.  Each lane's result is bit for bit that of
  * dem_mat_jaumann (on the stress and each back-stress) and dem_mat_update
- * with deps = d dt. */
+ * with deps = d dt.
+ *
+ * syc (NULL: none) is a record of each point's static flow stress
+ * sigma_y(ep), kept by the caller beside ep (double[DEM_MAT_NB]): for a law
+ * without a closed-form return (DEM_MAT_GENERAL) and without back-stresses,
+ * a lane whose trial stress lies below its record is elastic without the
+ * general return, and each lane that goes through the return gets its
+ * record updated.  Start it at m->sy_floor (never above sigma_y(ep)) and
+ * reset it there whenever ep changes other than through this call; the
+ * results are the same bit for bit with or without it. */
 #define DEM_MAT_NB 4
 
 unsigned dem_mat_update_batch(const dem_mat_t *m, double dt,
 			      const double *restrict d, const double *restrict w,
 			      double *restrict sig, double *restrict ep,
-			      double *restrict kin, double *restrict wp);
+			      double *restrict kin, double *restrict wp,
+			      double *restrict syc);
 
 /* Elastic stiffness D (6x6, row-major) mapping engineering strains to stress. */
 void dem_mat_elastic_stiffness(const dem_mat_t *m, double D[36]);

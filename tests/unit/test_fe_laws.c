@@ -430,7 +430,9 @@ static void test_tangent(void **state)
 /* The batched update gives bit for bit the scalar one (the Jaumann
  * rotation of the stress and of each back-stress, then the update) lane
  * by lane, for the general laws, with a mix of elastic and plastic lanes,
- * with and without spin. */
+ * with and without spin, and with and without the record of the static
+ * flow stress (syc), which then holds sigma_y(ep) of each lane that has been
+ * through the general return and never more than it. */
 static void test_batch(void **state)
 {
 	(void)state;
@@ -445,12 +447,17 @@ static void test_batch(void **state)
 	jcs.cs_p = 4;
 	const dem_mat_param_t *sets[] = { &P_VOCE, &kr, &jcs, &P_PRAGER };
 	unsigned long seed = 7;
-	int nplastic = 0;
-	for (size_t k = 0; k < COUNT(sets); k++) {
+	int nplastic = 0, nrec = 0;
+	for (size_t kr2 = 0; kr2 < 2 * COUNT(sets); kr2++) {
+		const size_t k = kr2 / 2;
+		const int rec = kr2 % 2;
 		dem_mat_t m;
 		init(&m, sets[k]);
 		int nh = dem_mat_nhist(&m);
 		assert_int_equal(nh, 6 * sets[k]->nkin);
+		double syc[NB];
+		for (int l = 0; l < NB; l++)
+			syc[l] = m.sy_floor;
 		double sy = dem_mat_flow_stress(&m, 0, 0);
 		double sig[6][NB] = { { 0 } }, ep[NB] = { 0 }, kin[18][NB] = { { 0 } };
 		double ss[NB][6] = { { 0 } }, es[NB] = { 0 }, ks[NB][18] = { { 0 } };
@@ -468,7 +475,7 @@ static void test_batch(void **state)
 			}
 			int spin = step % 3 != 0;
 			unsigned mask = dem_mat_update_batch(&m, dt, d[0], spin ? w[0] : NULL, sig[0], ep,
-							     nh ? kin[0] : NULL, wp);
+							     nh ? kin[0] : NULL, wp, rec ? syc : NULL);
 			for (int l = 0; l < NB; l++) {
 				double dd[6], ww[3] = { w[0][l], w[1][l], w[2][l] }, wps;
 				for (int c = 0; c < 6; c++)
@@ -488,11 +495,19 @@ static void test_batch(void **state)
 				if (pl)
 					assert_true(memcmp(&wp[l], &wps, sizeof(double)) == 0);
 				nplastic += pl;
+				if (rec) {
+					double fl = dem_mat_flow_stress(&m, es[l], 0);
+					assert_true(syc[l] >= m.sy_floor && syc[l] <= fl);
+					if (!nh && pl)   /* just through the return */
+						assert_true(syc[l] == fl);
+					nrec += !nh && syc[l] > m.sy_floor;
+				}
 			}
 		}
 		dem_mat_free(&m);
 	}
-	assert_true(nplastic > 500);
+	assert_true(nplastic > 1000);
+	assert_true(nrec > 100);
 }
 
 /* The floor of the static curve that lets the batched update skip elastic

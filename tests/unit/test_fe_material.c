@@ -450,7 +450,7 @@ static void test_batch_update(void **state)
 					w[c][l] = (l - 1.5) * 1e3 * (c + 1);
 			}
 			int spin = step % 3 != 0;
-			unsigned mask = dem_mat_update_batch(m, dt, d[0], spin ? w[0] : NULL, sig[0], ep, NULL, wp);
+			unsigned mask = dem_mat_update_batch(m, dt, d[0], spin ? w[0] : NULL, sig[0], ep, NULL, wp, NULL);
 			for (int l = 0; l < NB; l++) {
 				double dd[6], ww[3] = { w[0][l], w[1][l], w[2][l] }, wps;
 				double ep0 = es[l];
