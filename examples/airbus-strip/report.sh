@@ -10,11 +10,18 @@
 # exposure raises the arc height by at most 10 %, h(2n) <= 1.1 h(n) (the
 # rule of SAE J443; the thesis's check, Ch. 8.6.2, is the same with n = 16
 # of 32 passes).  Needs 2n within the run.
+#
+# The gauge and the coverage (issue 25): fit.txt of each velocity
+# (examples/almen's saturation.sh on curve.txt: demfit's two-parameter
+# curve and the rule on the points, by the arc height and by demform's
+# gauge_height), the gauge's ball rectangle, the chord and the plate from
+# form.txt (demform's gauge:, chord: and plate: keys), the gauge reading
+# and the plastic coverage of each pass from passes.txt.
 set -eu
 out=$1 vels=$2 scene=$3
 
 for v in $vels; do
-	for f in passes.txt saturation.txt centre.txt form.txt demshot.log; do
+	for f in passes.txt fit.txt saturation.txt centre.txt form.txt demshot.log; do
 		[ -s "$out/v$v/$f" ] || { echo "report.sh: $out/v$v/$f: missing" >&2; exit 1; }
 	done
 done
@@ -82,6 +89,89 @@ echo "Rule: the earliest n with h(2n) <= 1.1 h(n) (doubling the exposure raises"
 echo "the arc height by at most 10 %; SAE J443).  The thesis checks pass 16"
 echo "against pass 32 (Ch. 8.6.2); the column before last is that check."
 echo
+
+echo "## Intensity as a gauge reads it, and coverage"
+echo
+# the gauge's rectangle, the chord and the plate as demform read them
+# (form.txt, the last pass; lengths in m, printed in mm)
+set -- $(awk '$1 == "gauge:" { g = $2 " " $3 } $1 == "chord:" { c = $2 } $1 == "plate:" { p = $2 " " $3 " " $4 }
+	END { if (g == "") g = "0 0"; print g, c, p }' "$out/v$first/form.txt")
+glx=$1 gly=$2 chord=$3
+plate=$(awk -v L="$4" -v W="$5" -v h="$6" 'BEGIN { printf "%g x %g x %g", L * 1e3, W * 1e3, h * 1e3 }')
+span=$(awk -v lx="$glx" -v ly="$gly" 'BEGIN { printf "%g x %g", lx * 1e3, ly * 1e3 }')
+along=$(awk -v lx="$glx" -v ly="$gly" 'BEGIN { printf "%g mm along the strip and %g mm across", lx * 1e3, ly * 1e3 }')
+cmm=$(awk -v c="$chord" 'BEGIN { printf "%g", c * 1e3 }')
+if [ "$glx" = 0 ]; then
+	echo "No gauge reading: the gauge's ball rectangle does not fit on the plate"
+	echo "(demform(1), form.gauge)."
+	echo
+else
+sph=$(awk -v lx="$glx" -v ly="$gly" -v c="$chord" 'BEGIN { printf "%.4f", ((lx / 2) ^ 2 + (ly / 2) ^ 2) / (c / 2) ^ 2 }')
+echo "The gauge (demform's gauge_height): the face opposite the peened one rests on"
+echo "four balls at the corners of a $span mm rectangle centred on the strip"
+echo "(form.gauge; demform's default, 31.75 x 15.875 mm, is the SAE J442 Almen gauge's),"
+echo "and the reading is the height of that face's centre over the balls' plane."
+echo "This strip ($plate mm) is not an Almen strip (A: 76.2 x 19.05 x 1.29 mm):"
+echo "the reading is that of an Almen gauge set on its middle, a span of"
+echo "$along, against the arc height's"
+echo "$cmm mm chord along the length.  It is not an Almen intensity, and no A, N or C"
+echo "designation applies.  For w = -(kx x^2 + ky y^2)/2 the gauge over the chord is"
+echo "(kx p^2 + ky q^2) / (kx (L/2)^2), p and q the half sides, L the chord: $sph"
+echo "when kx = ky."
+echo
+echo "Saturation point (SAE J443: h(2T) = 1.1 h(T)) by examples/almen's saturation.sh"
+echo "(demfit: the fit h(n) = a (1 - exp(-b n)), T = ln 10 / b, h(T) = 0.9 a; and the"
+echo "rule on the points, the earliest n with h(2n) <= 1.1 h(n)); T and n in passes,"
+echo "heights in mm:"
+echo
+echo "| v (m/s) | arc height: fit T, h(T) | arc height: points n, h(n) | **gauge: fit T, h(T)** | **gauge: points n, h(n)** | gauge over chord: the fits' h(T); after $npass passes; closed form | passes to 98 % plastic coverage |"
+echo "|---|---|---|---|---|---|---|"
+for v in $vels; do
+	awk -v v="$v" -v lx="$glx" -v ly="$gly" -v c="$chord" '
+	FNR == NR { f[$1] = $2; next }
+	!/^#/ { n = $1 + 1; h = $3; kx = $4; ky = $5; g = $6; pc = $7; N = n
+		if (pc >= 0.98 && !n98) n98 = n }
+	END {
+		for (k = 0; k < 2; k++) {
+			p = k ? "gauge_" : ""
+			T = f[p "T"]; I = f[p "intensity"]
+			s[k] = sprintf("%.2f, %.4f%s", T, I, 2 * T > N ? sprintf(" (2T = %.2f > %d: extrapolated)", 2 * T, N) : "")
+			d[k] = f[p "data_T"] > 0 ? sprintf("%d, %.4f", f[p "data_T"], f[p "data_h"]) : sprintf("none within %d", N)
+		}
+		r = sprintf("%.4f; %.4f; %.4f", f["gauge_intensity"] / f["intensity"], g / h,
+			(kx * (lx / 2) ^ 2 + ky * (ly / 2) ^ 2) / (kx * (c / 2) ^ 2))
+		c98 = n98 ? sprintf("%d", n98) : sprintf("stays below (%.3f after %d)", pc, N)
+		printf "| %s | %s | %s | %s | %s | %s | %s |\n", v, s[0], d[0], s[1], d[1], r, c98
+	}' "$out/v$v/fit.txt" "$out/v$v/passes.txt"
+done
+echo
+echo "(Closed form: with the last pass's curvatures kx, ky.  Plastic coverage:"
+echo "demprofile's share of the region's top whose plastic strain exceeds"
+echo "profile.plastic_threshold (0.002 by default), the FE counterpart of the dimpled"
+echo "area of SAE J2277, where 100 % coverage is 98 % of the surface dimpled.)"
+echo
+hdr="| passes |" sep="|---|"
+for v in $vels; do hdr="$hdr v = $v m/s: gauge (mm) | gauge / arc height | plastic coverage |"; sep="$sep---|---|---|"; done
+echo "$hdr"; echo "$sep"
+awk -v vels="$vels" -v out="$out" 'BEGIN {
+	nv = split(vels, V, " ")
+	for (i = 1; i <= nv; i++) {
+		f = out "/v" V[i] "/passes.txt"
+		while ((getline l < f) > 0) {
+			if (l ~ /^#/) continue
+			split(l, c, " "); p = c[1] + 0; h[i, p] = c[3]; g[i, p] = c[6]; pc[i, p] = c[7]
+			if (p > last) last = p
+		}
+	}
+	for (p = 0; p <= last; p++) {
+		s = "| " p + 1 " |"
+		for (i = 1; i <= nv; i++)
+			s = s sprintf(" %.5f | %.4f | %.3f |", g[i, p], h[i, p] > 0 ? g[i, p] / h[i, p] : 0, pc[i, p])
+		print s
+	}
+}'
+echo
+fi
 
 echo "## Residual profile of the sample block and the formed strip (last pass)"
 echo

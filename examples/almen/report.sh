@@ -27,8 +27,9 @@ awk '$1 != "" { v[$1] = $2 } END {
 	printf "- **intensity h(T) = %.4f mm = %.4f in, i.e. %.4f A** (usable range of the A strip 0.004-0.024 in: %s)\n", \
 		I, I / 25.4, I / 25.4, (I / 25.4 >= 0.004 && I / 25.4 <= 0.024 ? "inside" : "OUTSIDE")
 	if (v["T3"] > 0)
-		printf "- the three-parameter curve h(n) = a (1 - exp(-b n^c)) (a = %.4f mm, b = %.4f, c = %.4f, rms %.4f mm): T = %.2f passes, h(T) = %.4f mm\n", \
-			v["fit3_a"], v["fit3_b"], v["fit3_c"], v["fit3_rms"], v["T3"], v["intensity3"]
+		printf "- the three-parameter curve h(n) = a (1 - exp(-b n^c)) (a = %.4f mm, b = %.4f, c = %.4f, rms %.4f mm): T = %.2f passes, h(T) = %.4f mm%s\n", \
+			v["fit3_a"], v["fit3_b"], v["fit3_c"], v["fit3_rms"], v["T3"], v["intensity3"], \
+			(2 * v["T3"] <= N ? "" : sprintf(" -- 2T = %.1f is beyond the %d passes run: extrapolated", 2 * v["T3"], N))
 	else
 		printf "- the three-parameter curve h(n) = a (1 - exp(-b n^c)) (a = %.4f mm, b = %.4f, c = %.4f, rms %.4f mm): 2^c <= 1.1, no saturation point\n", \
 			v["fit3_a"], v["fit3_b"], v["fit3_c"], v["fit3_rms"]
@@ -38,7 +39,8 @@ awk '$1 != "" { v[$1] = $2 } END {
 		printf "- the rule on the points themselves: no n with 2n measured satisfies h(2n) <= 1.1 h(n)\n"
 	if ("gauge_T" in v) {
 		G = v["gauge_intensity"]
-		printf "- **as the J442 gauge reads it** (the unpeened face on four balls, 31.75 x 15.875 mm, demform gauge_height): fit T = %.1f passes, **intensity %.4f mm = %.4f A**", v["gauge_T"], G, G / 25.4
+		printf "- **as the J442 gauge reads it** (the unpeened face on four balls, 31.75 x 15.875 mm, demform gauge_height): fit T = %.1f passes%s, **intensity %.4f mm = %.4f A**", v["gauge_T"], \
+			(2 * v["gauge_T"] <= N ? "" : sprintf(" (2T = %.1f beyond the run: extrapolated)", 2 * v["gauge_T"])), G, G / 25.4
 		if (v["gauge_data_T"] > 0)
 			printf "; on the points n = %d, %.4f mm = %.4f A", v["gauge_data_T"], v["gauge_data_h"], v["gauge_data_h"] / 25.4
 		printf "; gauge over chord %.3f\n", G / I
