@@ -1,7 +1,7 @@
 #!/bin/sh
 # Install the Debian packages the toolkit needs, or say how.
 # Quick when everything is there: one dpkg-query call.
-pkgs="build-essential pkg-config libgsl-dev libyaml-dev zlib1g-dev libsuitesparse-dev libopenblas0-serial libcmocka-dev bats gnuplot-nox valgrind"
+pkgs="build-essential pkg-config libgsl-dev libyaml-dev zlib1g-dev libsuitesparse-dev libopenblas0-pthread libcmocka-dev bats gnuplot-nox valgrind"
 missing=""
 for p in $pkgs; do
 	st=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null)

@@ -13,8 +13,8 @@ set key top left
 set grid
 set datafile separator "\t"
 v(b, t) = (strcol(2) eq b && $3 == t)
-plot tsv using 4:(v("serial", 1) ? $10 : 1/0) with linespoints pt 7 title "wall, sequential OpenBLAS, 1 thread", \
-     tsv using 4:(v("pthread", 2) ? $10 : 1/0) with linespoints pt 5 title "wall, OpenBLAS pthreads, 2 threads", \
-     tsv using 4:(v("openmp", 2) ? $10 : 1/0) with linespoints pt 9 title "wall, OpenBLAS OpenMP, 2 threads", \
-     tsv using 4:(v("serial", 1) ? $8 : 1/0) with linespoints pt 6 dt 2 title "factor, sequential, 1 thread", \
-     tsv using 4:(v("serial", 1) ? $12 / 1024 : 1/0) axes x1y2 with linespoints pt 4 dt 3 title "memory (right), sequential"
+plot tsv using 4:(v("serial", 1) ? $10 : 1/0) with points pt 7 title "wall, sequential OpenBLAS, 1 thread", \
+     tsv using 4:(v("pthread", 2) ? $10 : 1/0) with points pt 5 title "wall, OpenBLAS pthreads, 2 threads", \
+     tsv using 4:(v("openmp", 2) ? $10 : 1/0) with points pt 9 title "wall, OpenBLAS OpenMP, 2 threads", \
+     tsv using 4:(v("serial", 1) ? $8 : 1/0) with points pt 6 title "factor, sequential, 1 thread", \
+     tsv using 4:(v("serial", 1) ? $12 / 1024 : 1/0) axes x1y2 with points pt 4 title "memory (right), sequential"
