@@ -614,6 +614,7 @@ typedef struct gret {
 	double th[DEM_MAT_NKIN];   /* th_i at x */
 	double k[DEM_MAT_NKIN];    /* k_i at x */
 	double hp;                 /* d(sigma_y R)/dx at x */
+	double sy;                 /* sigma_y(ep + x), the static flow stress at x */
 	double v[6];               /* d xi / dx = sum gamma_i th_i a_i,n */
 	double ck;                 /* sum dk_i/dx = sum C_i th_i */
 } gret_t;
@@ -648,6 +649,7 @@ static double gfun(const dem_mat_t *m, const double st[6], const double *a,
 		R = rate_R(m, x / dt, &dR);
 	g->x = x;
 	g->xn = xn;
+	g->sy = sy;
 	for (int c = 0; c < 6; c++)
 		g->n[c] = xn > 0 ? xi[c] / xn : 0;
 	g->hp = h * R + (dR != 0 ? sy * dR / dt : 0);
@@ -659,7 +661,7 @@ static double gfun(const dem_mat_t *m, const double st[6], const double *a,
 /* The plastic part of the general update: sig holds the trial stress,
  * ep, a (the back-stresses) the start state.  Returns 1 and the end state
  * if the trial state yields, else 0 (sig, ep, a untouched); *g the solution
- * (for the tangent). */
+ * (for the tangent; of an elastic increment only g->sy, sigma_y(ep)). */
 static int return_general(const dem_mat_t *m, double sig[6], double *ep,
 			  double *a, double dt, double *wp, gret_t *g)
 {
@@ -679,6 +681,7 @@ static int return_general(const dem_mat_t *m, double sig[6], double *ep,
 	 * the rate */
 	if (q2 <= sy0 * sy0) {
 		*wp = 0;
+		g->sy = sy0;
 		return 0;
 	}
 	double f0 = sqrt(q2) - sy0;
@@ -774,10 +777,8 @@ static unsigned batch_general(const dem_mat_t *m, double dt, const double *restr
 		}
 		for (int j = 0; j < nh; j++)
 			kin[j * NB + l] = a[j];
-		if (syc) {   /* the static flow stress at the lane's end state */
-			double h;
-			syc[l] = iso_flow(m, ep[l], &h);
-		}
+		if (syc)   /* the static flow stress at the lane's end state */
+			syc[l] = g.sy;
 	}
 	return mask;
 }
