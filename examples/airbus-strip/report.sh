@@ -42,28 +42,38 @@ echo "Written by report.sh from the run's outputs (scene \`$scene\`: sample bloc
 echo "$elements hex8, $npass passes of 16 shots; strip 4500 hex8, free, small strain)."
 echo
 
+# join_passes CELL - the passes tables (passes.txt) of the velocities joined
+# row by row: a row per pass, and for each velocity the cells that the awk
+# expression CELL makes of the pass's fields c[1..] (a pass a velocity
+# lacks: CELL of empty fields)
+join_passes() {
+	awk -v vels="$vels" -v out="$out" 'BEGIN {
+		nv = split(vels, V, " ")
+		for (i = 1; i <= nv; i++) {
+			f = out "/v" V[i] "/passes.txt"
+			while ((getline l < f) > 0) {
+				if (l ~ /^#/) continue
+				split(l, c, " "); p = c[1] + 0; row[i, p] = '"$1"'
+				if (p > last) last = p
+			}
+		}
+		for (p = 0; p <= last; p++) {
+			s = "| " p + 1 " |"
+			for (i = 1; i <= nv; i++) {
+				if (!((i, p) in row)) { split("", c); row[i, p] = '"$1"' }
+				s = s row[i, p]
+			}
+			print s
+		}
+	}'
+}
+
 echo "## Arc height after each pass (mm, over the 150 mm length)"
 echo
 hdr="| passes |" sep="|---|"
 for v in $vels; do hdr="$hdr v = $v m/s | coverage |"; sep="$sep---|---|"; done
 echo "$hdr"; echo "$sep"
-# join the passes tables of the velocities row by row
-awk -v vels="$vels" -v out="$out" 'BEGIN {
-	nv = split(vels, V, " ")
-	for (i = 1; i <= nv; i++) {
-		f = out "/v" V[i] "/passes.txt"
-		while ((getline l < f) > 0) {
-			if (l ~ /^#/) continue
-			split(l, c, " "); p = c[1] + 0; h[i, p] = c[3]; cov[i, p] = c[2]
-			if (p > last) last = p
-		}
-	}
-	for (p = 0; p <= last; p++) {
-		s = "| " p + 1 " |"
-		for (i = 1; i <= nv; i++) s = s sprintf(" %.4f | %.2f |", h[i, p], cov[i, p])
-		print s
-	}
-}'
+join_passes 'sprintf(" %.4f | %.2f |", c[3], c[2])'
 echo
 echo "(coverage: the share of the profile region indented by more than 1 um.)"
 echo
@@ -153,23 +163,7 @@ echo
 hdr="| passes |" sep="|---|"
 for v in $vels; do hdr="$hdr v = $v m/s: gauge (mm) | gauge / arc height | plastic coverage |"; sep="$sep---|---|---|"; done
 echo "$hdr"; echo "$sep"
-awk -v vels="$vels" -v out="$out" 'BEGIN {
-	nv = split(vels, V, " ")
-	for (i = 1; i <= nv; i++) {
-		f = out "/v" V[i] "/passes.txt"
-		while ((getline l < f) > 0) {
-			if (l ~ /^#/) continue
-			split(l, c, " "); p = c[1] + 0; h[i, p] = c[3]; g[i, p] = c[6]; pc[i, p] = c[7]
-			if (p > last) last = p
-		}
-	}
-	for (p = 0; p <= last; p++) {
-		s = "| " p + 1 " |"
-		for (i = 1; i <= nv; i++)
-			s = s sprintf(" %.5f | %.4f | %.3f |", g[i, p], h[i, p] > 0 ? g[i, p] / h[i, p] : 0, pc[i, p])
-		print s
-	}
-}'
+join_passes 'sprintf(" %.5f | %.4f | %.3f |", c[6], c[3] > 0 ? c[6] / c[3] : 0, c[7])'
 echo
 fi
 
