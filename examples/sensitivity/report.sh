@@ -25,6 +25,12 @@ for r in $rows; do
 	done
 done
 
+# the reference's mesh, as run (the study's MESH)
+v1=$(set -- $vels; echo $1)
+mesh=$(awk '/^block:/ { b = 1 } b && /^  element:/ { print $2, $3; exit }' "$out/ref/v$v1/scene.yaml")
+mu=$(awk '/^contact:/ { c = 1; next } /^[^ #]/ { c = 0 } c && /^  friction:/ { f = $2 } END { print f == "" ? "none" : f }' "$out/ref/v$v1/scene.yaml")
+fdepth=$(awk '/^block:/ { b = 1 } b && /^  fine_depth:/ { print $2, $3; exit }' "$out/ref/v$v1/scene.yaml")
+
 h() { # h ROW V N: the arc height after N
 	awk -v n="$3" '$1 == n { print $2 }' "$out/$1/v$2/h.txt"
 }
@@ -32,7 +38,8 @@ h() { # h ROW V N: the arc height after N
 echo "# sensitivity: what moves the arc height (report of \`$out/\`)"
 echo
 echo "Written by report.sh from the runs in \`$out/\`: the reference scene"
-echo "(examples/airbus-strip/quick.yaml: 0.1 mm elements, demshot --accuracy coarse)"
+echo "(examples/airbus-strip/quick.yaml with $mesh elements in the impact area, $fdepth deep,"
+echo "Coulomb friction $mu between shot and block, demshot --accuracy coarse)"
 echo "with one modelling choice changed a row, arc height in mm over the 150 mm"
 echo "length of the free strip after n passes of 16 shots (n = $(echo $at | sed 's/ /, /g')),"
 echo "at $(echo $vels | sed 's/ / and /') m/s."
@@ -58,7 +65,7 @@ for r in $rows; do
 	for v in $vels; do
 		for n in $at; do line="$line $(h $r $v $n) |"; done
 		hl=$(h $r $v $alast) h2=$(h $r $v $a2) hr=$(h ref $v $alast)
-		read -r wall steps < "$out/$r/v$v/time.txt"
+		read -r wall steps _ < "$out/$r/v$v/time.txt"
 		d=$(awk -v a="$hl" -v b="$hr" 'BEGIN { printf "%+.1f", 100 * (a / b - 1) }')
 		line="$line $(awk -v a="$hl" -v b="$h2" 'BEGIN { printf "%+.1f %%", 100 * (a / b - 1) }') |"
 		line="$line $( [ $r = ref ] && echo - || echo "$d %") | $wall ($steps) |"
@@ -77,9 +84,9 @@ rm -f "$out/tornado.dat.tmp"
 echo "## The choices that move the arc height most"
 echo
 echo "By the largest change of the arc height after $alast against the reference,"
-echo "over the velocities:"
+echo "over the velocities (the noise row, a change of the time step, left out):"
 echo
-tail -n 3 "$out/tornado.dat" | awk 'BEGIN { k = 0 } { lines[++k] = $0 } END {
+grep -v '^"time step factor' "$out/tornado.dat" | tail -n 3 | awk 'BEGIN { k = 0 } { lines[++k] = $0 } END {
 	for (i = k; i >= 1; i--) {
 		l = lines[i]; s = l; sub(/^"/, "", s); q = index(s, "\""); name = substr(s, 1, q - 1)
 		rest = substr(s, q + 1); printf "%d. %s:%s %%\n", k - i + 1, name, rest
@@ -96,3 +103,6 @@ total=$(for r in $rows; do for v in $vels; do cut -d' ' -f1 "$out/$r/v$v/time.tx
 echo "The stages of all the rows took $total s of wall time in all (the sum over the"
 echo "runs; with make -j2 two run at once).  demshot's cost lines per row are in"
 echo "\`$out/ROW/vV/demshot.log\`."
+span=$(for r in $rows; do for v in $vels; do cut -d' ' -f3,4 "$out/$r/v$v/time.txt"; done; done |
+	awk 'NF == 2 { if (!n++ || $1 < a) a = $1; if ($2 > b) b = $2 } END { if (n) printf "%.0f", b - a }')
+[ -z "$span" ] || echo "From the first row's start to the last row's end: $span s ($(awk -v s="$span" 'BEGIN { printf "%d min %d s", s / 60, s % 60 }'))."

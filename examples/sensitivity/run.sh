@@ -8,7 +8,8 @@
 # into OUT/ROW/vV/: scene.yaml (the scene as run), row.txt (group, choice,
 # value, stage), h.txt (n and the arc height in mm after n passes' worth of
 # shots, n in AT), time.txt (the wall seconds of the stages this row ran,
-# and demshot's steps).  PASSES: the passes of the grid run (pack.passes).
+# demshot's steps, and the start and end of the row in seconds since the
+# epoch).  PASSES: the passes of the grid run (pack.passes).
 #
 # A row changes one stage: "shot" rows run every stage; "profile" rows
 # take the reference's state stream (OUT/ref/vV/peen.state) and rerun
@@ -17,11 +18,15 @@
 # the stages it runs.  Every value changed is written beside its source.
 #
 # Environment: BIN (the programs), THREADS (demshot's threads; empty: the
-# scene's/all), SEED (dempack's; 1).
+# scene's/all), SEED (dempack's; 1), MESH (the element size of the impact
+# area in mm; 0.1, quick.yaml's own), FRICTION (the reference's mu; 0,
+# quick.yaml's own).
 set -eu
 row=$1 v=$2 out=$3 passes=$4 at=$5
 BIN=${BIN:-../../bin}
 SEED=${SEED:-1}
+MESH=${MESH:-0.1}
+FRICTION=${FRICTION:-0}
 base=../airbus-strip/quick.yaml
 d=$out/$row/v$v
 ref=$out/ref/v$v
@@ -38,6 +43,25 @@ sub() {
 
 sed "s/^  passes: 8\$/  passes: $passes/" "$base" > "$d/scene.yaml"
 grep -q "^  passes: $passes\$" "$d/scene.yaml" || { echo "run.sh: no 'passes: 8' line in $base" >&2; exit 1; }
+# the study's mesh (MESH, in mm): the element of the impact area and
+# fine_depth, the whole number of its layers nearest quick.yaml's 0.6 mm
+# (0.14 mm = d/10 for the 1.4 mm S550 shot, the largest element Ch. 7.5.4
+# allows; 0.1 is quick.yaml itself).  The profile's margin (0.56 mm) is
+# left as it is.
+# the reference's friction (FRICTION, Coulomb mu between shot and
+# block): 0.2 by the literature reading of README.md (Han 2004 Ch. 7.5.3:
+# the residual stress grows with mu up to 0.2 and hardly beyond; Wu et
+# al., Surface Engineering 2018, doi:10.1080/02670844.2018.1470817:
+# accurate residual stresses need mu of 0.2 or more); quick.yaml, as
+# Ch. 8.6 states none, has no friction (FRICTION=0 runs it so)
+if [ "$FRICTION" != 0 ]; then
+	sub '  alpha: 2' "  alpha: 2\\
+  friction: $FRICTION"
+fi
+if [ "$MESH" != 0.1 ]; then
+	sub '  element: 0.1 mm' "  element: $MESH mm"
+	sub '  fine_depth: 0.6 mm' "  fine_depth: $(awk -v h="$MESH" 'BEGIN { n = int(0.6 / h + 0.5); printf "%.10g", n * h }') mm"
+fi
 
 stage=shot pack="" shot="" prof="" form="" k=1
 case $row in
@@ -65,8 +89,16 @@ steady05) group=damping; choice="end of pass (run.steady)"; value="0.05 of peak 
 alpha1) group=contact; choice="penalty alpha"; value="1"; sub '  alpha: 2' '  alpha: 1' ;;
 alpha5) group=contact; choice="penalty alpha"; value="5"; sub '  alpha: 2' '  alpha: 5' ;;
 linear) group=contact; choice="contact exponent m"; value="1 (linear)"; sub '  m: 1.5' '  m: 1' ;;
-mu02) group=contact; choice="friction"; value="0.2"; sub '  alpha: 2' '  alpha: 2\
+mu02) group=contact; choice="friction"; value="0.2"
+	[ "$FRICTION" = 0 ] || { echo "run.sh: mu02: the reference has friction" >&2; exit 2; }
+	sub '  alpha: 2' '  alpha: 2\
   friction: 0.2' ;;
+mu0) group=contact; choice="friction"; value="0 (none)"
+	[ "$FRICTION" != 0 ] || { echo "run.sh: mu0: the reference has no friction" >&2; exit 2; }
+	sub "  friction: $FRICTION" '  friction: 0' ;;
+mu05) group=contact; choice="friction"; value="0.5"
+	[ "$FRICTION" != 0 ] || { echo "run.sh: mu05: the reference has no friction" >&2; exit 2; }
+	sub "  friction: $FRICTION" '  friction: 0.5' ;;
 # the noise floor: not a modelling choice but a change that should not
 # matter, the explicit time step at 0.85 of the stable step instead of 0.9
 # (demshot(1)); the passes' frames then differ by what the ringing block
@@ -143,5 +175,5 @@ for n in $at; do
 	echo "$n $h" >> "$d/h.txt.tmp"
 done
 t1=$(now)
-awk -v a="$t0" -v b="$t1" -v s="$steps" 'BEGIN { printf "%.1f %s\n", b - a, s }' > "$d/time.txt"
+awk -v a="$t0" -v b="$t1" -v s="$steps" 'BEGIN { printf "%.1f %s %.1f %.1f\n", b - a, s, a, b }' > "$d/time.txt"
 mv -f "$d/h.txt.tmp" "$d/h.txt"
