@@ -38,7 +38,8 @@ while [ "$i" -lt "$rounds" ]; do
 		for v in base this; do
 			bin=$top/bin/demshot
 			[ "$v" = base ] && bin=$dir/src/bin/demshot
-			DEM_SHARE=$top/share "$bin" -s "$dir/$law.yaml" --threads "$threads" \
+			# the base build may predate DEM_DATA (it read DEM_SHARE)
+			DEM_DATA=$top/share DEM_SHARE=$top/share "$bin" -s "$dir/$law.yaml" --threads "$threads" \
 				-o "$dir/$law-$v.state" "$dir/shots.txt" 2> "$dir/$law-$v.log"
 			same=1
 			[ "$v" = this ] && [ "$(state_rows "$dir/$law-$v.state")" != "$(state_rows "$dir/$law-base.state")" ] && same=0

@@ -49,22 +49,30 @@ static void exe_dir(char *buf, size_t len)
 		*(slash == buf ? slash + 1 : slash) = '\0';
 }
 
-/* Walk up from dir to the first ancestor holding share/folder; write its
- * share/ into out.  Returns 1 if found. */
+/* Walk up from dir to the first ancestor that is the toolkit's source
+ * tree (share/folder beside lib/core/share.h: an installed program's
+ * ancestors, e.g. /usr for /usr/bin, are not taken for one because some
+ * other package has a share/materials); write its share/ into out.
+ * Returns 1 if found. */
 static int share_above(const char *dir, const char *folder, char *out,
 		       size_t len)
 {
-	char d[PATH_MAX], probe[PATH_MAX + 64];
+	char d[PATH_MAX], probe[PATH_MAX + 64], mark[PATH_MAX + 32];
 	char *slash;
 
 	if (!dir[0] || strlen(dir) >= sizeof d)
 		return 0;
 	strcpy(d, dir);
 	for (;;) {
-		int n = snprintf(probe, sizeof probe, "%s/share/%s",
-				 strcmp(d, "/") ? d : "", folder);
+		const char *top = strcmp(d, "/") ? d : "";
+		int n = snprintf(probe, sizeof probe, "%s/share/%s", top,
+				 folder);
+		int m = snprintf(mark, sizeof mark, "%s/lib/core/share.h",
+				 top);
 
-		if (n > 0 && (size_t)n < sizeof probe && is_dir(probe)) {
+		if (n > 0 && (size_t)n < sizeof probe && m > 0 &&
+		    (size_t)m < sizeof mark && is_dir(probe) &&
+		    is_file(mark)) {
 			size_t dl = strcmp(d, "/") ? strlen(d) : 0;
 
 			if (dl + sizeof "/share" > len)
@@ -86,25 +94,24 @@ int dem_share_find(const char *folder, const char *file, char **path,
 		   char *tried, size_t triedlen)
 {
 	char dir[PATH_MAX], exe[PATH_MAX], how[PATH_MAX + 128];
-	const char *env = getenv("DEM_SHARE");
+	const char *env = getenv("DEM_DATA");
 	size_t n;
 	char *p;
 
 	*path = NULL;
 	if (env && *env) {
 		snprintf(dir, sizeof dir, "%s", env);
-		snprintf(how, sizeof how, "from DEM_SHARE");
+		snprintf(how, sizeof how, "from DEM_DATA");
 	} else {
 		exe_dir(exe, sizeof exe);
 		if (share_above(exe, folder, dir, sizeof dir)) {
-			snprintf(how, sizeof how, "the share/ above the "
-				 "program, %s", exe);
+			snprintf(how, sizeof how, "the source tree's share/ "
+				 "above the program, %s", exe);
 		} else {
 			snprintf(dir, sizeof dir, "%s", DEM_DATADIR);
 			snprintf(how, sizeof how, "the compiled-in data "
-				 "directory; DEM_SHARE is not set and no "
-				 "share/%s is above %s", folder,
-				 exe[0] ? exe : "the program");
+				 "directory; DEM_DATA is not set and %s is not "
+				 "in a source tree", exe[0] ? exe : "the program");
 		}
 	}
 	/* "dir/" and "dir" name the same folder: write one slash */

@@ -1144,7 +1144,7 @@ static void test_many_keys(void **state)
 /* ---- library files (use:) ------------------------------------------------ */
 
 /* A data directory of the test's own, so that no test depends on the
- * toolkit's real library files: DEM_SHARE=<tmp>/share, with materials/ and
+ * toolkit's real library files: DEM_DATA=<tmp>/share, with materials/ and
  * shots/.  Returns the folder. */
 static const char *use_share(void)
 {
@@ -1156,7 +1156,7 @@ static const char *use_share(void)
 	assert_true(mkdir("share", 0777) == 0 || errno == EEXIST);
 	assert_true(mkdir("share/materials", 0777) == 0 || errno == EEXIST);
 	assert_true(mkdir("share/shots", 0777) == 0 || errno == EEXIST);
-	assert_int_equal(setenv("DEM_SHARE", share, 1), 0);
+	assert_int_equal(setenv("DEM_DATA", share, 1), 0);
 	return share;
 }
 
@@ -1309,10 +1309,10 @@ static void test_use_unknown(void **state)
 	(void)state;
 	snprintf(want, sizeof want, "strip.yaml:2:8: material.use: unknown "
 		 "library 'al9999': no al9999.yaml in %s/materials (from "
-		 "DEM_SHARE)", share);
+		 "DEM_DATA)", share);
 	load_fails("material:\n  use: al9999\n", DEM_EINPUT, want);
 	snprintf(want, sizeof want, "strip.yaml:2:8: shot.use: unknown "
-		 "library 'S230': no S230.yaml in %s/shots (from DEM_SHARE)",
+		 "library 'S230': no S230.yaml in %s/shots (from DEM_DATA)",
 		 share);
 	load_fails("shot:\n  use: S230\n", DEM_EINPUT, want);
 	load_fails("material:\n  use: a b\n", DEM_EINPUT,
@@ -1333,9 +1333,9 @@ static void test_use_unknown(void **state)
 		   "strip.yaml:2:8: material.use: cannot read '../al.yaml': "
 		   "No such file or directory");
 
-	/* without DEM_SHARE the folder is found from the program, or is the
+	/* without DEM_DATA the folder is found from the program, or is the
 	 * compiled-in one; either way the message says where it looked */
-	assert_int_equal(unsetenv("DEM_SHARE"), 0);
+	assert_int_equal(unsetenv("DEM_DATA"), 0);
 	write_file("strip.yaml", "material:\n  use: no-such-library-x\n");
 	assert_int_equal(dem_scene_load(&s, "strip.yaml", &e), DEM_EINPUT);
 	assert_null(s);
