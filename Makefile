@@ -6,12 +6,36 @@
 #   make check CC=clang     the same built by clang (in build/rel-clang)
 #   make demo       set up and run the main job on a bundled scene
 #   make deps       install the Debian packages the build needs (as root)
+#   make install    install under PREFIX (/usr/local); DESTDIR stages it
+#   make installcheck   the command-line tests on the installed programs
+#   make uninstall  remove what make install installed
+#
+# CFLAGS, CPPFLAGS and LDFLAGS, from the command line or the environment,
+# are added to the toolkit's own flags (dpkg-buildflags' hardening, say).
 
 VERSION  := 0.1.0
 CC       ?= cc
-# where an installed toolkit finds its share/ (material and shot libraries)
-DATADIR  ?= /usr/local/share/dem
 PKGS     := gsl yaml-0.1 zlib
+
+# Where make install puts things: the GNU directory variables.  The
+# programs look for the material library in pkgdatadir, compiled in (and
+# compiled again when it changes, so that `make && make install
+# PREFIX=~/.local` installs programs that look in ~/.local/share/dem);
+# DEM_DATA overrides it at run time (dem-scene(5)).
+PREFIX       = /usr/local
+prefix       = $(PREFIX)
+exec_prefix  = $(prefix)
+bindir       = $(exec_prefix)/bin
+libdir       = $(exec_prefix)/lib
+includedir   = $(prefix)/include
+datarootdir  = $(prefix)/share
+datadir      = $(datarootdir)
+mandir       = $(datarootdir)/man
+man1dir      = $(mandir)/man1
+man5dir      = $(mandir)/man5
+pkgdatadir   = $(datadir)/dem
+pkgconfigdir = $(libdir)/pkgconfig
+bashcompdir  = $(datadir)/bash-completion/completions
 
 # a compiler other than the default builds beside it, never over it
 COMPILER := $(if $(findstring clang,$(notdir $(firstword $(CC)))),clang,)
@@ -29,13 +53,13 @@ BUILD    := $(BUILD)-clang
 OPT      += -gdwarf-4
 endif
 
-CFLAGS   := -std=c11 -Wall -Wextra -Werror $(OPT) -D_POSIX_C_SOURCE=200809L \
-            -DDEM_VERSION='"$(VERSION)"' -DDEM_DATADIR='"$(DATADIR)"' \
-            -Ilib -fopenmp \
+DEM_CFLAGS := -std=c11 -Wall -Wextra -Werror $(OPT) -D_POSIX_C_SOURCE=200809L \
+            -DDEM_VERSION='"$(VERSION)"' -Ilib -fopenmp \
             $(shell pkg-config --cflags $(PKGS) 2>/dev/null) -I/usr/include/suitesparse
+ALL_CFLAGS = $(DEM_CFLAGS) $(CPPFLAGS) $(CFLAGS)
 # CHOLMOD (SuiteSparse) has no pkg-config file on Debian 12
 LDLIBS   := $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lcholmod -lm
-LDFLAGS  := $(filter -fsanitize% -fno-sanitize%,$(OPT)) -fopenmp
+ALL_LDFLAGS = $(filter -fsanitize% -fno-sanitize%,$(OPT)) -fopenmp $(LDFLAGS)
 
 LIB_SRC  := $(sort $(wildcard lib/*/*.c))
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
@@ -43,30 +67,41 @@ CMD_SRC  := $(sort $(wildcard cmd/*.c))
 PROGS    := $(CMD_SRC:cmd/%.c=$(BUILD)/bin/%)
 TEST_SRC := $(sort $(wildcard tests/unit/test_*.c))
 TESTS    := $(TEST_SRC:tests/unit/%.c=$(BUILD)/tests/%)
+# bash completion, made from each program's --help (tools/completion.sh)
+COMPLETIONS := $(PROGS:$(BUILD)/bin/%=$(BUILD)/completion/%)
 
 ifneq ($(SAN)$(COMPILER),)
 LIBDEM   := $(BUILD)/lib/libdem.a
-BINDIR   := $(BUILD)/bin
+BUILDBIN := $(BUILD)/bin
 else
 LIBDEM   := lib/libdem.a
-BINDIR   := bin
+BUILDBIN := bin
 endif
 
-.PHONY: all deps build check unit cli demo clean bench
+.PHONY: all deps build check test demo clean bench FORCE \
+        install uninstall installcheck
 .SUFFIXES:
 .SECONDARY:
 
 all: deps
 	@$(MAKE) --no-print-directory build
 
-build: $(LIBDEM) $(PROGS:$(BUILD)/bin/%=$(BINDIR)/%)
+build: $(LIBDEM) $(PROGS:$(BUILD)/bin/%=$(BUILDBIN)/%) $(COMPLETIONS)
 
 deps:
 	@sh tools/deps.sh
 
 $(BUILD)/%.o: %.c
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) -MMD -MP -c $< -o $@
+	$(CC) $(ALL_CFLAGS) $(EXTRA_$(notdir $*)) -MMD -MP -c $< -o $@
+
+# the compiled-in data directory: only share.o holds it, remade when the
+# file below changes (it is rewritten only then)
+EXTRA_share = -DDEM_DATADIR='"$(pkgdatadir)"'
+$(BUILD)/lib/core/share.o: $(BUILD)/pkgdatadir
+$(BUILD)/pkgdatadir: FORCE
+	@mkdir -p $(@D)
+	@echo '$(pkgdatadir)' | cmp -s - $@ || echo '$(pkgdatadir)' > $@
 
 $(LIBDEM): $(LIB_OBJ)
 	@mkdir -p $(@D)
@@ -74,7 +109,7 @@ $(LIBDEM): $(LIB_OBJ)
 
 $(BUILD)/bin/%: $(BUILD)/cmd/%.o $(LIBDEM)
 	@mkdir -p $(@D)
-	$(CC) $(LDFLAGS) $< $(LIBDEM) $(LDLIBS) -o $@
+	$(CC) $(ALL_LDFLAGS) $< $(LIBDEM) $(LDLIBS) -o $@
 
 ifeq ($(SAN)$(COMPILER),)
 bin/%: $(BUILD)/bin/%
@@ -82,13 +117,28 @@ bin/%: $(BUILD)/bin/%
 	cp $< $@.tmp && mv -f $@.tmp $@
 endif
 
+$(BUILD)/completion/%: $(BUILD)/bin/% tools/completion.sh
+	@mkdir -p $(@D)
+	sh tools/completion.sh $< > $@.tmp && mv -f $@.tmp $@
+
 $(BUILD)/tests/%: $(BUILD)/tests/unit/%.o $(LIBDEM)
 	@mkdir -p $(@D)
-	$(CC) $(LDFLAGS) $< $(LIBDEM) $(LDLIBS) -lcmocka -o $@
+	$(CC) $(ALL_LDFLAGS) $< $(LIBDEM) $(LDLIBS) -lcmocka -o $@
+
+# what the tests need to know besides PATH: where the completions are, the
+# compiler, and where make install puts things (tests/install)
+TEST_ENV = DEM_TEST_COMPDIR="$(abspath $(BUILD)/completion)" DEM_TEST_CC="$(CC)" \
+           DEM_TEST_DIRS="prefix=$(prefix) bindir=$(bindir) libdir=$(libdir) \
+             includedir=$(includedir) mandir=$(mandir) pkgdatadir=$(pkgdatadir) \
+             pkgconfigdir=$(pkgconfigdir) bashcompdir=$(bashcompdir)"
 
 check: deps
-	@$(MAKE) --no-print-directory build $(TESTS)
-	@sh tests/run.sh "$(BUILD)/tests" "$(abspath $(BINDIR))" "$(SANITIZE)"
+	@$(MAKE) --no-print-directory test
+
+# check without make deps
+test: build $(TESTS)
+	@$(TEST_ENV) sh tests/run.sh "$(BUILD)/tests" "$(abspath $(BUILDBIN))" "$(SANITIZE)" \
+	  tests/cli tests/install/staged.bats
 
 demo: deps
 	@$(MAKE) --no-print-directory build
@@ -99,5 +149,59 @@ bench: all
 
 clean:
 	rm -rf build bin lib/libdem.a
+
+# ---- install -----------------------------------------------------------
+# What goes where, one line a folder: MODE FOLDER FILE...; tools/install.sh
+# installs and uninstalls by it.  The bundled scenes are the examples'
+# (examples/NAME/X.yaml -> $(pkgdatadir)/scenes/NAME/X.yaml).
+HEADERS_PRIVATE := lib/contact/vec3.h lib/detect/dcell_impl.h \
+                   lib/detect/dcell_sweep.h lib/fe/simd.h
+HEADERS  := $(filter-out $(HEADERS_PRIVATE),$(sort $(wildcard lib/*/*.h)))
+SCENES   := $(sort $(wildcard examples/*/*.yaml examples/verification/laws-mat/*.yaml))
+# $(call in_dir,DIR/,FILES): the FILES right in DIR (not below it)
+in_dir = $(foreach f,$(2),$(if $(filter $(1),$(dir $(f))),$(f)))
+define nl
+
+
+endef
+define INSTALL_PLAN
+755 $(bindir) $(PROGS)
+644 $(man1dir) $(sort $(wildcard man/man1/*.1))
+644 $(man5dir) $(sort $(wildcard man/man5/*.5))
+644 $(pkgdatadir) share/README.md
+644 $(pkgdatadir)/materials $(sort $(wildcard share/materials/*.yaml))
+644 $(pkgdatadir)/shots $(sort $(wildcard share/shots/*.yaml))
+$(foreach d,$(sort $(dir $(SCENES))),644 $(pkgdatadir)/scenes/$(d:examples/%/=%) $(call in_dir,$(d),$(SCENES))$(nl))
+644 $(libdir) $(LIBDEM)
+$(foreach d,$(sort $(dir $(HEADERS))),644 $(includedir)/dem/$(d:lib/%/=%) $(call in_dir,$(d),$(HEADERS))$(nl))
+644 $(pkgconfigdir) $(BUILD)/dem.pc
+644 $(bashcompdir) $(COMPLETIONS)
+endef
+export INSTALL_PLAN
+
+$(BUILD)/dem.pc: lib/dem.pc.in FORCE
+	@mkdir -p $(@D)
+	@sed -e 's|@prefix@|$(prefix)|g' -e 's|@libdir@|$(libdir)|g' \
+	     -e 's|@includedir@|$(includedir)|g' -e 's|@pkgdatadir@|$(pkgdatadir)|g' \
+	     -e 's|@version@|$(VERSION)|g' \
+	     lib/dem.pc.in > $@.tmp
+	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv -f $@.tmp $@; fi
+
+install: build $(BUILD)/dem.pc
+	@sh tools/install.sh install "$(DESTDIR)" "$(pkgdatadir)"
+
+uninstall:
+	@sh tools/install.sh uninstall "$(DESTDIR)" "$(pkgdatadir)"
+
+# the command-line tests on the installed programs: PATH is the installed
+# bin/ and the system's, the scenes and the library are the installed ones
+# (through the compiled-in path; with DESTDIR, through DEM_DATA)
+installcheck:
+	@$(TEST_ENV) DEM_TEST_INSTALLED=1 \
+	  DEM_TEST_COMPDIR="$(DESTDIR)$(bashcompdir)" \
+	  DEM_TEST_DATA="$(DESTDIR)$(pkgdatadir)" \
+	  DEM_TEST_MANDIR="$(DESTDIR)$(mandir)" \
+	  DEM_TEST_DESTDIR="$(DESTDIR)" \
+	  sh tests/run.sh "" "$(DESTDIR)$(bindir)" "" tests/cli tests/install/installed.bats
 
 -include $(LIB_OBJ:.o=.d) $(CMD_SRC:cmd/%.c=$(BUILD)/cmd/%.d) $(TEST_SRC:tests/unit/%.c=$(BUILD)/tests/unit/%.d)

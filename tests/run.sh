@@ -1,13 +1,31 @@
 #!/bin/sh
 # Run every unit test (cmocka, TAP output) and every command-line test
 # (bats, TAP output), then print the one summary line "N passed, N failed".
-#   tests/run.sh TESTDIR BINDIR SANITIZE
+#   tests/run.sh TESTDIR BINDIR SANITIZE BATS...
+# TESTDIR empty: no unit tests.  BATS: the bats files and folders to run.
+# DEM_DATA is unset: the programs find their library as they do for a
+# user, in the source tree or where they were installed to.  With
+# DEM_TEST_INSTALLED=1 (make installcheck) PATH is BINDIR and the system's
+# folders only, and every program of cmd/ must be there; a staged install
+# (DEM_TEST_DESTDIR) has its library found through DEM_DATA.
 testdir=$1 bindir=$2 sanitize=$3
+shift 3
+unset DEM_DATA
+if [ "${DEM_TEST_INSTALLED:-}" = 1 ]; then
+	for c in cmd/*.c; do
+		p=$(basename "$c" .c)
+		[ -x "$bindir/$p" ] || { echo "installcheck: no $bindir/$p (make install first)" >&2; exit 4; }
+	done
+	path="$bindir:/usr/bin:/bin"
+	[ -z "${DEM_TEST_DESTDIR:-}" ] || export DEM_DATA="$DEM_TEST_DATA"
+else
+	path="$bindir:$PATH"
+fi
 log=$(mktemp -d) || exit 4
 trap 'rm -rf "$log"' EXIT
 status=0
 export CMOCKA_MESSAGE_OUTPUT=TAP
-for t in "$testdir"/test_*; do
+for t in ${testdir:+"$testdir"/test_*}; do
 	[ -x "$t" ] || continue
 	name=$(basename "$t")
 	if ! "$t" > "$log/$name.tap" 2>"$log/$name.err"; then
@@ -17,8 +35,10 @@ for t in "$testdir"/test_*; do
 		head -40 "$log/$name.err" >&2
 	fi
 done
-if ls tests/cli/*.bats >/dev/null 2>&1; then
-	if ! PATH="$bindir:$PATH" DEM_SANITIZE="$sanitize" bats --tap tests/cli > "$log/cli.tap" 2>"$log/cli.err"; then
+if [ $# -gt 0 ]; then
+	# bats by its full name: PATH may not have it
+	bats=$(command -v bats) || { echo "cli: bats is not installed" >&2; exit 4; }
+	if ! PATH="$path" DEM_SANITIZE="$sanitize" "$bats" --tap "$@" > "$log/cli.tap" 2>"$log/cli.err"; then
 		status=1
 		echo "cli: FAILED" >&2
 		grep -A12 '^not ok' "$log/cli.tap" >&2

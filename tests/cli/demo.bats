@@ -10,10 +10,13 @@
 # and closing line, and does nothing the second time.
 
 bats_require_minimum_version 1.5.0
+load helpers
 
 setup() {
 	T=$BATS_TEST_TMPDIR
-	DEMO=$BATS_TEST_DIRNAME/../../examples/demo
+	# the Makefile of the example, its scene from SCENES
+	DEMO=$ROOT/examples/demo
+	SCENE=$SCENES/demo/scene.yaml
 	# the bundled scene made small: a 1.4 mm tile with one shot, one pass,
 	# a 2.4 mm block with its 0.1 mm elements under the tile only
 	sed -e 's/^  area: \[2.8 mm, 2.8 mm\]$/  area: [1.4 mm, 1.4 mm]/' \
@@ -23,10 +26,10 @@ setup() {
 	    -e 's/^  fine: \[3.2 mm, 3.2 mm\]$/  fine: [1.4 mm, 1.4 mm]/' \
 	    -e 's/^  fine_depth: 0.8 mm$/  fine_depth: 0.6 mm/' \
 	    -e 's/^  margin: 0.28 mm$/  margin: 0.14 mm/' \
-	    "$DEMO/scene.yaml" > "$T/tiny.yaml"
+	    "$SCENE" > "$T/tiny.yaml"
 	# every edit took (else the test would run the whole demo, or a
 	# scene that no longer is the demo's)
-	[ "$(diff "$DEMO/scene.yaml" "$T/tiny.yaml" | grep -c '^>')" -eq 7 ]
+	[ "$(diff "$SCENE" "$T/tiny.yaml" | grep -c '^>')" -eq 7 ]
 }
 
 # the closed form of a free elastic plate (E, nu, h) under the profile of

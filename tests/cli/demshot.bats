@@ -183,11 +183,11 @@ YAML
 # a coarse block 2 x 2 x 1 mm of 0.1 mm elements (fine region 0.4 mm deep),
 # passes of at most 20 us.
 
-CH75=$BATS_TEST_DIRNAME/../../examples/ch75
+CH75=$SCENES/ch75
 
 # scene_set SCENE KEY=VALUE...: SCENE with the keys set (scene.sh)
 scene_set() {
-	sh "$CH75/scene.sh" "$@"
+	sh "$ROOT/examples/ch75/scene.sh" "$@"
 }
 
 shot_scene() {

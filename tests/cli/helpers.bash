@@ -1,5 +1,30 @@
 # Helpers shared by the command-line tests (loaded with `load helpers`).
 
+# Where the tests find the toolkit's files: in the source tree, or with
+# make installcheck where they were installed (the Makefile's DEM_TEST_*):
+# ROOT the source tree (the tests and the examples' scripts), SCENES the
+# examples' scenes (examples/NAME/X.yaml or DATADIR/scenes/NAME/X.yaml),
+# DATA the material and shot library, MANDIR the man pages, COMPDIR the
+# bash completions.
+ROOT=$(cd "$BATS_TEST_DIRNAME/../.." && pwd)
+if [ -n "${DEM_TEST_DATA:-}" ]; then
+	SCENES=$DEM_TEST_DATA/scenes
+	DATA=$DEM_TEST_DATA
+else
+	SCENES=$ROOT/examples
+	DATA=$ROOT/share
+fi
+MANDIR=${DEM_TEST_MANDIR:-$ROOT/man}
+COMPDIR=${DEM_TEST_COMPDIR:-$ROOT/build/rel/completion}
+
+# man_page NAME SECTION: the file of a man page under MANDIR, as make
+# install leaves it or compressed (a Debian package's)
+man_page() {
+	local f=$MANDIR/man$2/$1.$2
+	[ -f "$f" ] || [ ! -f "$f.gz" ] || f=$f.gz
+	echo "$f"
+}
+
 # A usage error: exit 2, nothing on stdout, one message line naming the
 # program, then "Try 'prog --help' ..." (coreutils).  Returns 1 (with the
 # details on stdout, which bats shows) when it is not one.

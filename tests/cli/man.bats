@@ -2,12 +2,13 @@
 # The man pages agree with --help (STYLE.md: "make check fails when the man
 # page and --help disagree on the options") and render without warnings.
 # Every program of cmd/ is checked; it runs from PATH (bin/, or the
-# sanitizer build, first), its page is man/man1/PROG.1.
+# sanitizer build, first), its page is man/man1/PROG.1 (with make
+# installcheck, the installed program and page: MANDIR, helpers.bash).
 
 bats_require_minimum_version 1.5.0
+load helpers
 
 setup() {
-	ROOT=$(cd "$BATS_TEST_DIRNAME/../.." && pwd)
 	PROGS=()
 	for c in "$ROOT"/cmd/*.c; do
 		PROGS+=("$(basename "$c" .c)")
@@ -33,18 +34,18 @@ man_options() {
 	[ "${#PROGS[@]}" -ge 2 ]
 	for p in "${PROGS[@]}"; do
 		command -v "$p"
-		[ -f "$ROOT/man/man1/$p.1" ] || { echo "no man/man1/$p.1"; false; }
+		[ -f "$(man_page "$p" 1)" ] || { echo "no $MANDIR/man1/$p.1"; false; }
 	done
 }
 
 @test "man: every long option of --help appears in the man page as \\-\\-name" {
 	for p in "${PROGS[@]}"; do
-		page=$ROOT/man/man1/$p.1
+		page=$(man_page "$p" 1)
 		opts=$("$p" --help | grep -oE '^ +(-[[:alnum:]], )?--[[:alnum:]][[:alnum:]-]*' | sed 's/.*--//')
 		[ -n "$opts" ]
 		for o in $opts; do
 			esc=${o//-/\\\\-}
-			grep -qE -- "(\\\\-\\\\-|--)($o|$esc)([^[:alnum:]\\\\-]|\\\\[^-]|\$)" "$page" ||
+			zcat -f "$page" | grep -qE -- "(\\\\-\\\\-|--)($o|$esc)([^[:alnum:]\\\\-]|\\\\[^-]|\$)" ||
 				{ echo "$p: --$o is not in $page"; false; }
 		done
 	done
@@ -53,7 +54,7 @@ man_options() {
 @test "man: every option the OPTIONS section lists is in --help, with the same letter and argument" {
 	for p in "${PROGS[@]}"; do
 		help_options "$p" | sort > "$BATS_TEST_TMPDIR/help"
-		man_options "$ROOT/man/man1/$p.1" | sort > "$BATS_TEST_TMPDIR/man"
+		man_options "$(man_page "$p" 1)" | sort > "$BATS_TEST_TMPDIR/man"
 		echo "$p: --help (<) against man OPTIONS (>):"
 		[ -s "$BATS_TEST_TMPDIR/man" ]
 		diff "$BATS_TEST_TMPDIR/help" "$BATS_TEST_TMPDIR/man"
@@ -61,7 +62,9 @@ man_options() {
 }
 
 @test "man: the pages render with man -l without warnings" {
-	for page in "$ROOT"/man/man1/*.1 "$ROOT"/man/man5/*.5; do
+	for src in "$ROOT"/man/man1/*.1 "$ROOT"/man/man5/*.5; do
+		name=$(basename "$src")
+		page=$(man_page "${name%.*}" "${name##*.}")
 		run --separate-stderr env MANWIDTH=80 man --warnings -l "$page"
 		echo "$page: $stderr"
 		[ "$status" -eq 0 ]
@@ -72,11 +75,11 @@ man_options() {
 
 @test "man: each page has the sections the toolkit's pages carry" {
 	for p in "${PROGS[@]}"; do
-		page=$ROOT/man/man1/$p.1
+		page=$(man_page "$p" 1)
 		for s in NAME SYNOPSIS DESCRIPTION OPTIONS "EXIT STATUS" EXAMPLES "SEE ALSO"; do
-			grep -qx "\\.SH \"\\?$s\"\\?" "$page" || { echo "$p: no $s section"; false; }
+			zcat -f "$page" | grep -qx "\\.SH \"\\?$s\"\\?" || { echo "$p: no $s section"; false; }
 		done
-		grep -q "^$p \\\\- " "$page"
+		zcat -f "$page" | grep -q "^$p \\\\- "
 	done
-	grep -qx '\.SH NAME' "$ROOT/man/man5/dem-streams.5"
+	zcat -f "$(man_page dem-streams 5)" | grep -qx '\.SH NAME'
 }

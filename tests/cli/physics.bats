@@ -27,12 +27,14 @@
 bats_require_minimum_version 1.5.0
 load helpers
 
-CH75=$BATS_TEST_DIRNAME/../../examples/ch75
+# the scene (installed with make installcheck) and the script of the example
+CH75=$SCENES/ch75
+SCENE_SH=$ROOT/examples/ch75/scene.sh
 
 # scene FILE SIDE FINE [FRICTION]: the Ch. 7.5 scene on a SIDE x SIDE block
 # (mm) with a FINE x FINE region of 0.1 mm elements, 0.5 mm deep
 scene() {
-	sh "$CH75/scene.sh" "$CH75/scene.yaml" "block.size=[$2 mm, $2 mm, 0.9 mm]" \
+	sh "$SCENE_SH" "$CH75/scene.yaml" "block.size=[$2 mm, $2 mm, 0.9 mm]" \
 		"block.element=0.1 mm" "block.fine=[$3 mm, $3 mm]" "block.fine_depth=0.5 mm" \
 		${4:+"contact.friction=$4"} > "$1"
 }
@@ -63,14 +65,14 @@ setup_file() {
 @test "examples/ch75/scene.sh: a key of the scene is set in its place, a new one added to its section, a missing section refused" {
 	# the variants of this file are made so; demshot reads them as set
 	D=$BATS_TEST_TMPDIR
-	sh "$CH75/scene.sh" "$CH75/scene.yaml" "block.element=0.2 mm" contact.friction=0.3 > "$D/v.yaml"
+	sh "$SCENE_SH" "$CH75/scene.yaml" "block.element=0.2 mm" contact.friction=0.3 > "$D/v.yaml"
 	diff "$CH75/scene.yaml" "$D/v.yaml" || true
 	[ "$(diff "$CH75/scene.yaml" "$D/v.yaml" | grep -c '^[<>]')" -eq 3 ]
 	run --separate-stderr demshot -s "$D/v.yaml" --dump-scene
 	[ "$status" -eq 0 ]
 	grep -qx '  element: 0.0002 m' <<< "$output"
 	grep -qx '  friction: 0.3' <<< "$output"
-	run --separate-stderr sh "$CH75/scene.sh" "$CH75/scene.yaml" load.pressure=1
+	run --separate-stderr sh "$SCENE_SH" "$CH75/scene.yaml" load.pressure=1
 	[ "$status" -eq 2 ]
 	[ -z "$output" ]
 	[[ $stderr == *"load.pressure: no section"* ]]

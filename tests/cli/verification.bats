@@ -13,15 +13,18 @@
 
 bats_require_minimum_version 1.5.0
 
+load helpers
+
 setup() {
 	T=$BATS_TEST_TMPDIR
-	EX=$BATS_TEST_DIRNAME/../../examples/verification
-	BIN=$BATS_TEST_DIRNAME/../../bin
+	EX=$ROOT/examples/verification
+	# the programs on PATH, the material sections from SCENES
+	BIN=$(dirname "$(command -v demshot)")
 }
 
 # the tiny case: 4 elements a diameter, 10 % coverage (a few passes)
 tiny() { # tiny DIR SEED
-	BIN=$BIN THREADS=1 PER_D=4 COVERAGE=10 SEED=$2 "$EX/run.sh" "$1" Al5052-0.28-90
+	BIN=$BIN MATDIR=$SCENES/verification THREADS=1 PER_D=4 COVERAGE=10 SEED=$2 "$EX/run.sh" "$1" Al5052-0.28-90
 }
 
 @test "verification run.sh: reproducible from the seed, another seed differs" {
