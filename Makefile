@@ -9,6 +9,7 @@
 #   make install    install under PREFIX (/usr/local); DESTDIR stages it
 #   make installcheck   the command-line tests on the installed programs
 #   make uninstall  remove what make install installed
+#   make deb        build the Debian packages (tools/deb.sh) into build/deb
 #
 # CFLAGS, CPPFLAGS and LDFLAGS, from the command line or the environment,
 # are added to the toolkit's own flags (dpkg-buildflags' hardening, say).
@@ -79,14 +80,14 @@ BUILDBIN := bin
 endif
 
 .PHONY: all deps build check test demo clean bench FORCE \
-        install uninstall installcheck
+        install uninstall installcheck deb
 .SUFFIXES:
 .SECONDARY:
 
 all: deps
 	@$(MAKE) --no-print-directory build
 
-build: $(LIBDEM) $(PROGS:$(BUILD)/bin/%=$(BUILDBIN)/%) $(COMPLETIONS)
+build: $(LIBDEM) $(PROGS:$(BUILD)/bin/%=$(BUILDBIN)/%) $(COMPLETIONS) $(BUILD)/dem.pc
 
 deps:
 	@sh tools/deps.sh
@@ -135,7 +136,7 @@ TEST_ENV = DEM_TEST_COMPDIR="$(abspath $(BUILD)/completion)" DEM_TEST_CC="$(CC)"
 check: deps
 	@$(MAKE) --no-print-directory test
 
-# check without make deps
+# check without make deps (the Debian package build runs this one)
 test: build $(TESTS)
 	@$(TEST_ENV) sh tests/run.sh "$(BUILD)/tests" "$(abspath $(BUILDBIN))" "$(SANITIZE)" \
 	  tests/cli tests/install/staged.bats
@@ -179,15 +180,15 @@ $(foreach d,$(sort $(dir $(HEADERS))),644 $(includedir)/dem/$(d:lib/%/=%) $(call
 endef
 export INSTALL_PLAN
 
+# dem.pc for the folders of this make (rewritten only when they change)
+PC_SED = sed -e 's|@prefix@|$(prefix)|g' -e 's|@libdir@|$(libdir)|g' \
+             -e 's|@includedir@|$(includedir)|g' -e 's|@pkgdatadir@|$(pkgdatadir)|g' \
+             -e 's|@version@|$(VERSION)|g' lib/dem.pc.in
 $(BUILD)/dem.pc: lib/dem.pc.in FORCE
 	@mkdir -p $(@D)
-	@sed -e 's|@prefix@|$(prefix)|g' -e 's|@libdir@|$(libdir)|g' \
-	     -e 's|@includedir@|$(includedir)|g' -e 's|@pkgdatadir@|$(pkgdatadir)|g' \
-	     -e 's|@version@|$(VERSION)|g' \
-	     lib/dem.pc.in > $@.tmp
-	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv -f $@.tmp $@; fi
+	@$(PC_SED) | cmp -s - $@ || $(PC_SED) > $@
 
-install: build $(BUILD)/dem.pc
+install: build
 	@sh tools/install.sh install "$(DESTDIR)" "$(pkgdatadir)"
 
 uninstall:
@@ -203,5 +204,8 @@ installcheck:
 	  DEM_TEST_MANDIR="$(DESTDIR)$(mandir)" \
 	  DEM_TEST_DESTDIR="$(DESTDIR)" \
 	  sh tests/run.sh "" "$(DESTDIR)$(bindir)" "" tests/cli tests/install/installed.bats
+
+deb:
+	@sh tools/deb.sh build/deb
 
 -include $(LIB_OBJ:.o=.d) $(CMD_SRC:cmd/%.c=$(BUILD)/cmd/%.d) $(TEST_SRC:tests/unit/%.c=$(BUILD)/tests/unit/%.d)
