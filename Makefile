@@ -94,11 +94,11 @@ deps:
 
 $(BUILD)/%.o: %.c
 	@mkdir -p $(@D)
-	$(CC) $(ALL_CFLAGS) $(EXTRA_$(notdir $*)) -MMD -MP -c $< -o $@
+	$(CC) $(ALL_CFLAGS) $(DATADIR_DEF) -MMD -MP -c $< -o $@
 
 # the compiled-in data directory: only share.o holds it, remade when the
 # file below changes (it is rewritten only then)
-EXTRA_share = -DDEM_DATADIR='"$(pkgdatadir)"'
+$(BUILD)/lib/core/share.o: DATADIR_DEF = -DDEM_DATADIR='"$(pkgdatadir)"'
 $(BUILD)/lib/core/share.o: $(BUILD)/pkgdatadir
 $(BUILD)/pkgdatadir: FORCE
 	@mkdir -p $(@D)
