@@ -65,19 +65,21 @@ expected() {
 	grep -qx "libdir=$libdir" "$T/stage$pkgconfigdir/dem.pc"
 }
 
-# cc_dem ARGS...: the compiler of the build with the staged dem.pc
+# pc OPTION...: pkg-config OPTION... dem, on the staged dem.pc
+pc() { PKG_CONFIG_PATH="$T/stage$pkgconfigdir" PKG_CONFIG_SYSROOT_DIR="$T/stage" pkg-config "$@" dem; }
+
+# cc_dem ARGS...: the compiler of the build, as strict as the build
 cc_dem() {
 	local san=
 	[ "${DEM_SANITIZE:-}" != 1 ] || san="-fsanitize=address,undefined"
-	# shellcheck disable=SC2046
-	${DEM_TEST_CC:-cc} -std=c11 -Wall -Wextra -Werror $san "$@" \
-		$(PKG_CONFIG_PATH="$T/stage$pkgconfigdir" PKG_CONFIG_SYSROOT_DIR="$T/stage" pkg-config --cflags --libs dem)
+	${DEM_TEST_CC:-cc} -std=c11 -Wall -Wextra -Werror $san "$@"
 }
 
 @test "install: a program of one's own builds with pkg-config on the headers and libdem.a, and counts the pairs demdetect counts" {
 	stage "$T/stage"
-	PKG_CONFIG_PATH="$T/stage$pkgconfigdir" pkg-config --exists --print-errors dem
-	cc_dem "$ROOT/tests/install/pairs.c" -o "$T/pairs"
+	pc --exists --print-errors
+	# shellcheck disable=SC2046
+	cc_dem "$ROOT/tests/install/pairs.c" $(pc --cflags --libs) -o "$T/pairs"
 	pairs_agree "$T/pairs"
 	# a truncated stream: the reader's error, not a count
 	head -c 300 "$T/p2" > "$T/cut"
@@ -87,7 +89,8 @@ cc_dem() {
 	# each installed header compiles on its own
 	for h in $(cd "$T/stage$includedir/dem" && find . -name '*.h' | sed 's|^\./||'); do
 		printf '#include <%s>\nint main(void) { return 0; }\n' "$h" > "$T/h.c"
-		cc_dem -c "$T/h.c" -o "$T/h.o" || { echo "$h does not compile alone"; false; }
+		# shellcheck disable=SC2046
+		cc_dem -c "$T/h.c" $(pc --cflags) -o "$T/h.o" || { echo "$h does not compile alone"; false; }
 	done
 }
 
