@@ -26,10 +26,6 @@ set -eo pipefail
 out=$1
 here=$(cd "$(dirname "$0")" && pwd)
 bin=$(cd "${BIN:-$here/../../bin}" && pwd)
-threads=${THREADS:-1}
-per_d=${PER_D:-5}
-area_d=${AREA_D:-8}
-d=${D:-0.28}
 seps=${SEPS:-1.2 1.4 1.6 2 3}
 mkdir -p "$out"
 cd "$out"

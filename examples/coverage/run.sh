@@ -25,11 +25,7 @@ set -eo pipefail
 out=$1
 here=$(cd "$(dirname "$0")" && pwd)
 bin=$(cd "${BIN:-$here/../../bin}" && pwd)
-threads=${THREADS:-1}
-per_d=${PER_D:-5}
-area_d=${AREA_D:-8}
 seed=${SEED:-1}
-d=${D:-0.28}
 mkdir -p "$out"
 cd "$out"
 

@@ -1,6 +1,12 @@
 # scene.sh - sourced by run.sh and pair.sh: the lengths of the model
-# (from d, per_d, area_d and here, set by the caller) and scene CX CY,
-# the scene of examples/coverage (bash).
+# and scene CX CY,
+# the scene of examples/coverage (bash).  The model's settings, from the
+# environment: THREADS (demshot's, 1), PER_D (elements per D, 5), AREA_D
+# (the impact area's side in D, 8), D (the shot's diameter, 0.28 mm).
+threads=${THREADS:-1}
+per_d=${PER_D:-5}
+area_d=${AREA_D:-8}
+d=${D:-0.28}
 # lengths in mm from D: shot radius, element, impact area, block side,
 # block depth, fine depth, profile margin (0.75 D: at least the footprint
 # radius, 0.55 D measured at D/5), pass time (us, 2 D / v)
