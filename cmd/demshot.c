@@ -913,9 +913,14 @@ static void ck_close(struct ckpt *ck, int ok)
 	if (ck->j)
 		fclose(ck->j);
 	ck->j = NULL;
-	/* a finished run's outputs are complete: its checkpoint has done its job */
+	/* a finished run's outputs are complete: its checkpoint has done its
+	 * job; a failed one keeps its last checkpoint to resume from, and
+	 * with none the journal is of no use (a run that fails in its first
+	 * pass, a disk full before the first save) */
 	if (ok) {
 		remove(ck->path);
+		remove(ck->jpath);
+	} else if (access(ck->path, F_OK) != 0 && errno == ENOENT) {
 		remove(ck->jpath);
 	}
 	free(ck->jpath);

@@ -2,6 +2,7 @@
 
 #include <errno.h>
 #include <math.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,6 +15,14 @@ int dem_cli_init(dem_cli_t *c, const char *prog, const dem_opt_t *opts,
 	size_t n = 0;
 	while (opts[n].name)
 		n++;
+	/* a reader that goes away (a closed pipe) makes the next write fail
+	 * with EPIPE, an I/O error the program reports and exits on with 4
+	 * (DESIGN.md), removing its temporary files; by default the signal
+	 * would end it silently with 128 + SIGPIPE.  A caller that set its
+	 * own disposition keeps it. */
+	struct sigaction old;
+	if (sigaction(SIGPIPE, NULL, &old) == 0 && old.sa_handler == SIG_DFL)
+		signal(SIGPIPE, SIG_IGN);
 	memset(c, 0, sizeof *c);
 	c->prog = prog;
 	c->opts = opts;
