@@ -10,6 +10,7 @@
 #   make installcheck   the command-line tests on the installed programs
 #   make uninstall  remove what make install installed
 #   make deb        build the Debian packages (tools/deb.sh) into build/deb
+#   make fuzz       fuzz the readers with AFL++ (tests/fuzz: FUZZ_TIME seconds each)
 #
 # CFLAGS, CPPFLAGS and LDFLAGS, from the command line or the environment,
 # are added to the toolkit's own flags (dpkg-buildflags' hardening, say).
@@ -38,8 +39,9 @@ pkgdatadir   = $(datadir)/dem
 pkgconfigdir = $(libdir)/pkgconfig
 bashcompdir  = $(datadir)/bash-completion/completions
 
-# a compiler other than the default builds beside it, never over it
-COMPILER := $(if $(findstring clang,$(notdir $(firstword $(CC)))),clang,)
+# a compiler other than the default builds beside it, never over it (AFL++'s
+# afl-cc, for make fuzz, in build/rel-afl)
+COMPILER := $(if $(findstring afl,$(notdir $(firstword $(CC)))),afl,$(if $(findstring clang,$(notdir $(firstword $(CC)))),clang,))
 SAN      := $(filter 1,$(SANITIZE))
 ifeq ($(SANITIZE),1)
 BUILD    := build/san
@@ -48,8 +50,10 @@ else
 BUILD    := build/rel
 OPT      := -O2 -g
 endif
+ifneq ($(COMPILER),)
+BUILD    := $(BUILD)-$(COMPILER)
+endif
 ifeq ($(COMPILER),clang)
-BUILD    := $(BUILD)-clang
 # valgrind 3.19 (Debian 12) does not read clang's default DWARF 5
 OPT      += -gdwarf-4
 endif
@@ -68,6 +72,9 @@ CMD_SRC  := $(sort $(wildcard cmd/*.c))
 PROGS    := $(CMD_SRC:cmd/%.c=$(BUILD)/bin/%)
 TEST_SRC := $(sort $(wildcard tests/unit/test_*.c))
 TESTS    := $(TEST_SRC:tests/unit/%.c=$(BUILD)/tests/%)
+# the readers' fuzzing harness: make check replays tests/fuzz/corpus with
+# it, make fuzz runs it under AFL++
+FUZZER   := $(BUILD)/tests/fuzz-readers
 # bash completion, made from each program's --help (tools/completion.sh)
 COMPLETIONS := $(PROGS:$(BUILD)/bin/%=$(BUILD)/completion/%)
 
@@ -80,7 +87,7 @@ BUILDBIN := bin
 endif
 
 .PHONY: all deps build check test demo clean bench FORCE \
-        install uninstall installcheck deb
+        install uninstall installcheck deb fuzz
 .SUFFIXES:
 .SECONDARY:
 
@@ -126,6 +133,19 @@ $(BUILD)/tests/%: $(BUILD)/tests/unit/%.o $(LIBDEM)
 	@mkdir -p $(@D)
 	$(CC) $(ALL_LDFLAGS) $< $(LIBDEM) $(LDLIBS) -lcmocka -o $@
 
+$(FUZZER): $(BUILD)/tests/fuzz/fuzz.o $(LIBDEM)
+	@mkdir -p $(@D)
+	$(CC) $(ALL_LDFLAGS) $< $(LIBDEM) $(LDLIBS) -o $@
+
+# AFL++ on each reader for FUZZ_TIME seconds (tests/fuzz/run.sh: builds
+# with afl-cc under ASan and UBSan into build/rel-afl, keeps what crashes in
+# tests/fuzz/corpus, writes tests/fuzz/REPORT.md).  Not part of make deps:
+# it installs afl++ itself when missing (as root).
+FUZZ_TIME    = 600
+FUZZ_TARGETS = stream scene state profile
+fuzz:
+	@sh tests/fuzz/run.sh "$(FUZZ_TIME)" $(FUZZ_TARGETS)
+
 # what the tests need to know besides PATH: where the completions are, the
 # compiler, and where make install puts things (tests/install)
 TEST_ENV = DEM_TEST_COMPDIR="$(abspath $(BUILD)/completion)" DEM_TEST_CC="$(CC)" \
@@ -137,7 +157,7 @@ check: deps
 	@$(MAKE) --no-print-directory test
 
 # check without make deps (the Debian package build runs this one)
-test: build $(TESTS)
+test: build $(TESTS) $(FUZZER)
 	@$(TEST_ENV) sh tests/run.sh "$(BUILD)/tests" "$(abspath $(BUILDBIN))" "$(SANITIZE)" \
 	  tests/cli tests/install/staged.bats
 
@@ -208,4 +228,5 @@ installcheck:
 deb:
 	@sh tools/deb.sh build/deb
 
--include $(LIB_OBJ:.o=.d) $(CMD_SRC:cmd/%.c=$(BUILD)/cmd/%.d) $(TEST_SRC:tests/unit/%.c=$(BUILD)/tests/unit/%.d)
+-include $(LIB_OBJ:.o=.d) $(CMD_SRC:cmd/%.c=$(BUILD)/cmd/%.d) $(TEST_SRC:tests/unit/%.c=$(BUILD)/tests/unit/%.d) \
+         $(BUILD)/tests/fuzz/fuzz.d

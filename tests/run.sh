@@ -35,6 +35,25 @@ for t in ${testdir:+"$testdir"/test_*}; do
 		head -40 "$log/$name.err" >&2
 	fi
 done
+# the readers' fuzzing harness over its corpus (tests/fuzz: the seeds and
+# every input a fuzz run found to crash): no input may crash a reader
+fz=${testdir:+$testdir/fuzz-readers}
+if [ -n "$fz" ] && [ -x "$fz" ]; then
+	k=0
+	: > "$log/fuzz.tap"
+	for d in tests/fuzz/corpus/*/; do
+		t=$(basename "$d")
+		k=$((k + 1))
+		if "$fz" "$t" "$d"* > /dev/null 2> "$log/fuzz-$t.err"; then
+			echo "ok $k fuzz corpus: $t ($(ls "$d" | wc -l) inputs)" >> "$log/fuzz.tap"
+		else
+			status=1
+			echo "not ok $k fuzz corpus: $t" >> "$log/fuzz.tap"
+			echo "fuzz: $t: FAILED" >&2
+			head -40 "$log/fuzz-$t.err" >&2
+		fi
+	done
+fi
 if [ $# -gt 0 ]; then
 	# bats by its full name: PATH may not have it
 	bats=$(command -v bats) || { echo "cli: bats is not installed" >&2; exit 4; }
