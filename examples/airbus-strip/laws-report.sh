@@ -1,8 +1,9 @@
 #!/bin/sh
 # laws-report.sh "LAWS" [PNG] - REPORT-laws.md of `make laws` (and the
 # curves of every law in one plot, PNG, laws.gp): the quick preset
-# to 32 passes with each library law (out-laws/LAW/vV/passes.txt, pass p
-# is exposure n = p + 1) beside the linear law of the thesis on the same
+# to the exposure of 32 of the thesis's passes with each library law
+# (out-laws/LAW/vV/curve.txt: exposure n, in the thesis's passes of 16
+# shots, then passes.txt's columns) beside the linear law of the thesis on the same
 # preset (REPORT-long.md's table, from `make long`: the linear law's code
 # path is unchanged since) and the thesis's computed 2.2 / 2.45 mm after 32
 # passes (Ch. 8.6.2).  Per law and velocity: h(8), h(16), h(32), the
@@ -12,11 +13,12 @@
 set -eu
 laws=$1
 vels="36 46.5"
-echo "# airbus-strip: the material laws (quick preset, 32 passes)"
+echo "# airbus-strip: the material laws (quick preset, exposure 32)"
 echo
 echo "Written by \`make laws\` (laws-report.sh) on $(date '+%F') ($(nproc) cores, load average at"
 echo "the end $(cut -d' ' -f1-3 /proc/loadavg)).  The quick preset (quick.yaml: 0.1 mm elements,"
-echo "demshot --accuracy coarse) run to 32 passes with the material section taken from the"
+echo "demshot --accuracy coarse) run to the exposure of 32 of the thesis's passes (n, the shots"
+echo "on the 5.6 mm square over 16) with the material section taken from the"
 echo "library (share/materials); the linear row is the same preset with the thesis's law"
 echo "(REPORT-long.md).  Thesis (Ch. 8.6.2, its own model, 0.05 mm elements): 2.2 mm (36 m/s)"
 echo "and 2.45 mm (46.5 m/s) after 32 passes, saturated by pass 16."
@@ -25,17 +27,19 @@ echo "| law | v (m/s) | h(8) mm | h(16) | h(32) | 16 to 32 | saturated (16-32 wi
 echo "|---|---|---:|---:|---:|---:|---|---|---:|---:|"
 for v in $vels; do
 	col=$([ "$v" = 36 ] && echo 2 || echo 4)
-	awk -F'|' -v c="$col" '/^\| [0-9]+ \|/ { n = $2 + 0; if (n <= 32) print n - 1, 0, $(c + 1) + 0 }' REPORT-long.md \
+	awk -F'|' -v c="$col" '/^\| [0-9.]+ \|/ { n = $2 + 0; if (n <= 32) print n, 0, $(c + 1) + 0 }' REPORT-long.md \
 		> "/tmp/laws-linear-$$-$v.txt"
 done
-row() {   # law v passes-file saturation-file demshot-log
+row() {   # law v curve-file saturation-file demshot-log
 	awk -v law="$1" -v v="$2" -v sat="$4" -v lg="$5" '
 		FILENAME == sat && !/^#/ { s = $2; e = $0 }
 		FILENAME == lg && /^demshot: cost: / { for (i = 3; i <= NF; i++) { split($i, kv, "="); if (kv[1] == "wall_s") w = kv[2] } }
-		FILENAME != sat && FILENAME != lg && !/^#/ { n = $1 + 1; h[n] = $3; N = n }
+		FILENAME != sat && FILENAME != lg && !/^#/ { n = sprintf("%.10g", $1); k++; x[k] = n; h[n] = $3; N = n }
 		END {
-			for (n = 1; 2 * n <= N; n++) if (h[n] > 0 && h[2 * n] <= 1.1 * h[n]) { p = n; break }
-			j = p ? sprintf("%d (%.3f)", p, h[2 * p] / h[p]) : "none within " N
+			p = ""
+			for (i = 1; i <= k; i++) { d = sprintf("%.10g", 2 * x[i])
+				if ((d in h) && h[x[i]] > 0 && h[d] <= 1.1 * h[x[i]]) { p = x[i]; break } }
+			j = p != "" ? sprintf("%s (%.3f)", p, h[sprintf("%.10g", 2 * p)] / h[p]) : "none within " N
 			d = h[16] > 0 ? 100 * (h[32] / h[16] - 1) : 0
 			printf "| %s | %s | %.3f | %.3f | %.3f | %+.1f %% | %s | %s | %s | %s |\n", law, v,
 				h[8], h[16], h[32], d, (d <= 10 && d >= -10) ? "yes" : "no", j,
@@ -52,8 +56,8 @@ for v in $vels; do
 	row "linear (thesis, REPORT-long.md)" "$v" "/tmp/laws-linear-$$-$v.txt" "" ""
 	for l in $laws; do
 		d=out-laws/$l/v$v
-		[ -f "$d/passes.txt" ] || { echo "| $(label "$l") | $v | (not run) ||||||||"; continue; }
-		row "$(label "$l")" "$v" "$d/passes.txt" "$d/saturation.txt" "$d/demshot.log"
+		[ -f "$d/curve.txt" ] || { echo "| $(label "$l") | $v | (not run) ||||||||"; continue; }
+		row "$(label "$l")" "$v" "$d/curve.txt" "$d/saturation.txt" "$d/demshot.log"
 	done
 done
 # the curves in one plot (laws.gp), the linear law's from REPORT-long.md
@@ -62,8 +66,8 @@ if [ -n "${2:-}" ] && command -v gnuplot > /dev/null; then
 	for v in $vels; do
 		files="$files /tmp/laws-linear-$$-$v.txt" labels="$labels linear_thesis_${v}_m/s"
 		for l in $laws; do
-			[ -f "out-laws/$l/v$v/passes.txt" ] || continue
-			files="$files out-laws/$l/v$v/passes.txt" labels="$labels ${l}_${v}_m/s"
+			[ -f "out-laws/$l/v$v/curve.txt" ] || continue
+			files="$files out-laws/$l/v$v/curve.txt" labels="$labels ${l}_${v}_m/s"
 		done
 	done
 	gnuplot -e "out='$2'; files='$files'; labels='$labels'" laws.gp
@@ -83,7 +87,7 @@ for d in out-laws-full/*/; do
 done
 [ -n "$full" ] || exit 0
 echo
-echo "## Full size (scene.yaml: 0.05 mm elements, 139 240 hex8, 32 passes, 2 threads)"
+echo "## Full size (scene.yaml: 0.05 mm elements, 139 240 hex8, exposure 32, 2 threads)"
 echo
 echo "\`make laws-full\`: the full scene at one velocity with the library law, beside the"
 echo "linear law's full run (REPORT-full.md, \`make\`, an earlier day: its time is"
@@ -93,7 +97,7 @@ echo "| law | v (m/s) | h(16) mm | h(32) | 16 to 32 | demshot wall (min) | steps
 echo "|---|---|---:|---:|---:|---:|---:|---:|"
 fullrow() {   # label v report column
 	awk -F'|' -v law="$1" -v v="$2" -v c="$4" '
-		/^\| [0-9]+ \|/ { h[$2 + 0] = $(c) + 0 }
+		/^\| [0-9.]+ \|/ { h[$2 + 0] = $(c) + 0 }
 		/^- v = / && index($0, "v = " v " m/s:") {
 			for (i = 1; i <= split($0, f, " "); i++) { split(f[i], kv, "=");
 				if (kv[1] == "wall_s") w = kv[2]; if (kv[1] == "steps") st = kv[2];

@@ -19,9 +19,12 @@ out=$1 n=${2:-8}
 bin=${BIN:-../../bin}
 here=$(dirname "$0")
 mkdir -p "$out"
-cp "$here/quick.yaml" "$out/scene.yaml"
-# N passes of one shot, all at the centre (the grid pattern offsets each
-# pass; the offsets are set to zero here)
+# quick.yaml with the grid pattern (the random pattern's keys out)
+sed -e 's/^  pattern: random$/  pattern: grid/' -e '/^  per_pass: /d' -e '/^  separation: /d' \
+	"$here/quick.yaml" > "$out/scene.yaml"
+# N passes of one shot, all at the centre (the grid pattern of one shot,
+# whatever the scene's pattern; the grid offsets each pass, the offsets
+# are set to zero here)
 "$bin"/dempack -s "$out/scene.yaml" shots --grid 1 --area 1mm:1mm --passes "$n" --speed 46.5m/s \
 	--seed 1 2> /dev/null | awk '/^#/ { print; next } { $3 = 0; $4 = 0; print }' > "$out/shots.txt"
 "$bin"/demshot -s "$out/scene.yaml" ${THREADS:+--threads "$THREADS"} --forces "$out/forces.txt" \

@@ -5,8 +5,10 @@
 # pass, the wall time of each stage (the programs' cost lines).  Everything
 # printed is read from the run's outputs, nothing is typed in.
 #
-# Saturation: the exposure is the number of passes n (pass p of the streams
-# is n = p + 1).  The point is the earliest n for which doubling the
+# Exposure: n in the thesis's passes (16 shots on the 5.6 mm square), from
+# curve.txt (the Makefile's: pass p ends n = (p + 1) e, e = exposure.sh's
+# exposure a pass, 1 on the thesis's grid, 0.5 with 8 random shots a pass).
+# Saturation:  The point is the earliest n for which doubling the
 # exposure raises the arc height by at most 10 %, h(2n) <= 1.1 h(n) (the
 # rule of SAE J443; the thesis's check, Ch. 8.6.2, is the same with n = 16
 # of 32 passes).  Needs 2n within the run.
@@ -21,7 +23,7 @@ set -eu
 out=$1 vels=$2 scene=$3
 
 for v in $vels; do
-	for f in passes.txt fit.txt saturation.txt centre.txt form.txt demshot.log; do
+	for f in passes.txt curve.txt shots.txt fit.txt saturation.txt centre.txt form.txt demshot.log; do
 		[ -s "$out/v$v/$f" ] || { echo "report.sh: $out/v$v/$f: missing" >&2; exit 1; }
 	done
 done
@@ -36,32 +38,39 @@ costsum() { # costsum FILE PROGRAM KEY: the sum over all its cost lines
 first=$(set -- $vels; echo "$1")
 elements=$(sed -n 's/^demshot: block of \([0-9]*\) elements.*/\1/p' "$out/v$first/demshot.log" | head -n 1)
 npass=$(awk '!/^#/ { n++ } END { print n }' "$out/v$first/passes.txt")
+nexp=$(awk '!/^#/ { n = $1 } END { print n }' "$out/v$first/curve.txt")
+pattern=$(awk '$2 == "method" { for (i = 3; i <= NF; i++) if ($i ~ /^(pattern|per_pass)=/) { split($i, a, "="); v[a[1]] = a[2] } }
+	$2 == "data" { exit } END { printf "%s shots a pass, %s", v["per_pass"], v["pattern"] == "random" ? "at random" : "on the offset grid" }' "$out/v$first/shots.txt")
 echo "# airbus-strip: report of the run in \`$out/\`"
 echo
 echo "Written by report.sh from the run's outputs (scene \`$scene\`: sample block of"
-echo "$elements hex8, $npass passes of 16 shots; strip 4500 hex8, free, small strain)."
+echo "$elements hex8, $npass passes of $pattern, the exposure of $nexp of the"
+echo "thesis's passes of 16 shots; strip 4500 hex8, free, small strain).  Exposure n:"
+echo "in the thesis's passes (the shots on the 5.6 mm square over 16)."
 echo
 
-# join_passes CELL - the passes tables (passes.txt) of the velocities joined
-# row by row: a row per pass, and for each velocity the cells that the awk
-# expression CELL makes of the pass's fields c[1..] (a pass a velocity
-# lacks: CELL of empty fields)
+# join_passes CELL - the curves (curve.txt: exposure n, then the columns of
+# passes.txt) of the velocities joined row by row: a row per pass, the
+# exposure, and for each velocity the cells that the awk expression CELL
+# makes of the row's fields c[1..] (a row a velocity lacks: CELL of empty
+# fields)
 join_passes() {
 	awk -v vels="$vels" -v out="$out" 'BEGIN {
 		nv = split(vels, V, " ")
 		for (i = 1; i <= nv; i++) {
-			f = out "/v" V[i] "/passes.txt"
+			f = out "/v" V[i] "/curve.txt"; k = 0
 			while ((getline l < f) > 0) {
 				if (l ~ /^#/) continue
-				split(l, c, " "); p = c[1] + 0; row[i, p] = '"$1"'
-				if (p > last) last = p
+				split(l, c, " "); k++; row[i, k] = '"$1"'
+				if (!(k in n)) n[k] = c[1]
+				if (k > last) last = k
 			}
 		}
-		for (p = 0; p <= last; p++) {
-			s = "| " p + 1 " |"
+		for (k = 1; k <= last; k++) {
+			s = "| " n[k] " |"
 			for (i = 1; i <= nv; i++) {
-				if (!((i, p) in row)) { split("", c); row[i, p] = '"$1"' }
-				s = s row[i, p]
+				if (!((i, k) in row)) { split("", c); row[i, k] = '"$1"' }
+				s = s row[i, k]
 			}
 			print s
 		}
@@ -70,7 +79,7 @@ join_passes() {
 
 echo "## Arc height after each pass (mm, over the 150 mm length)"
 echo
-hdr="| passes |" sep="|---|"
+hdr="| exposure n |" sep="|---|"
 for v in $vels; do hdr="$hdr v = $v m/s | coverage |"; sep="$sep---|---|"; done
 echo "$hdr"; echo "$sep"
 join_passes 'sprintf(" %.4f | %.2f |", c[3], c[2])'
@@ -80,24 +89,29 @@ echo
 
 echo "## Saturation"
 echo
-echo "| v (m/s) | saturation point: passes n, h(2n) / h(n) | arc height there (mm) | change from n = $((npass / 2)) to $npass | arc height after $npass passes (mm) |"
+half=$(awk -v n="$nexp" 'BEGIN { printf "%.10g", n / 2 }')
+echo "| v (m/s) | saturation point: exposure n, h(2n) / h(n) | arc height there (mm) | change from n = $half to $nexp | arc height at n = $nexp (mm) |"
 echo "|---|---|---|---|---|"
 for v in $vels; do
-	awk -v v="$v" '!/^#/ { n = $1 + 1; h[n] = $3; N = n }
+	# exposures as curve.txt writes them (%.10g), so that 2n is found by its key
+	awk -v v="$v" '!/^#/ { k++; n[k] = $1; h[$1] = $3; N = $1 }
 	END {
-		sat = 0
-		for (n = 1; 2 * n <= N; n++) if (h[n] > 0 && h[2 * n] <= 1.1 * h[n]) { sat = n; break }
-		for (n = 1; 2 * n <= N; n++) if (h[n] > 0 && (rmin == "" || h[2 * n] / h[n] < rmin)) { rmin = h[2 * n] / h[n]; nmin = n }
-		s = sat ? sprintf("%d, %.3f", sat, h[2 * sat] / h[sat]) : sprintf("not reached within %d passes (smallest h(2n)/h(n): %.3f at n = %d)", N, rmin, nmin)
-		a = sat ? sprintf("%.4f", h[sat]) : "-"
-		m = int(N / 2)
+		sat = ""
+		for (i = 1; i <= k; i++) { d = sprintf("%.10g", 2 * n[i]); if (!(d in h) || h[n[i]] <= 0) continue
+			r = h[d] / h[n[i]]
+			if (sat == "" && r <= 1.1) sat = n[i]
+			if (rmin == "" || r < rmin) { rmin = r; nmin = n[i] } }
+		s = sat != "" ? sprintf("%s, %.3f", sat, h[sprintf("%.10g", 2 * sat)] / h[sat]) : sprintf("not reached within n = %s (smallest h(2n)/h(n): %.3f at n = %s)", N, rmin, nmin)
+		a = sat != "" ? sprintf("%.4f", h[sat]) : "-"
+		m = sprintf("%.10g", N / 2)
 		printf "| %s | %s | %s | %+.1f %% | %.4f |\n", v, s, a, 100 * (h[N] - h[m]) / h[m], h[N]
-	}' "$out/v$v/passes.txt"
+	}' "$out/v$v/curve.txt"
 done
 echo
 echo "Rule: the earliest n with h(2n) <= 1.1 h(n) (doubling the exposure raises"
 echo "the arc height by at most 10 %; SAE J443).  The thesis checks pass 16"
-echo "against pass 32 (Ch. 8.6.2); the column before last is that check."
+echo "against pass 32 (Ch. 8.6.2); the column before last is that check at the"
+echo "same exposure."
 echo
 
 echo "## Intensity as a gauge reads it, and coverage"
@@ -131,28 +145,28 @@ echo "when kx = ky."
 echo
 echo "Saturation point (SAE J443: h(2T) = 1.1 h(T)) by examples/almen's saturation.sh"
 echo "(demfit: the fit h(n) = a (1 - exp(-b n)), T = ln 10 / b, h(T) = 0.9 a; and the"
-echo "rule on the points, the earliest n with h(2n) <= 1.1 h(n)); T and n in passes,"
-echo "heights in mm:"
+echo "rule on the points, the earliest n with h(2n) <= 1.1 h(n)); T and n in the"
+echo "thesis's passes, heights in mm:"
 echo
-echo "| v (m/s) | arc height: fit T, h(T) | arc height: points n, h(n) | **gauge: fit T, h(T)** | **gauge: points n, h(n)** | gauge over chord: the fits' h(T); after $npass passes; closed form | passes to 98 % plastic coverage |"
+echo "| v (m/s) | arc height: fit T, h(T) | arc height: points n, h(n) | **gauge: fit T, h(T)** | **gauge: points n, h(n)** | gauge over chord: the fits' h(T); at n = $nexp; closed form | exposure to 98 % plastic coverage |"
 echo "|---|---|---|---|---|---|---|"
 for v in $vels; do
 	awk -v v="$v" -v lx="$glx" -v ly="$gly" -v c="$chord" '
 	FNR == NR { f[$1] = $2; next }
-	!/^#/ { n = $1 + 1; h = $3; kx = $4; ky = $5; g = $6; pc = $7; N = n
-		if (pc >= 0.98 && !n98) n98 = n }
+	!/^#/ { n = $1; h = $3; kx = $4; ky = $5; g = $6; pc = $7; N = n
+		if (pc >= 0.98 && n98 == "") n98 = n }
 	END {
 		for (k = 0; k < 2; k++) {
 			p = k ? "gauge_" : ""
 			T = f[p "T"]; I = f[p "intensity"]
-			s[k] = sprintf("%.2f, %.4f%s", T, I, 2 * T > N ? sprintf(" (2T = %.2f > %d: extrapolated)", 2 * T, N) : "")
-			d[k] = f[p "data_T"] > 0 ? sprintf("%d, %.4f", f[p "data_T"], f[p "data_h"]) : sprintf("none within %d", N)
+			s[k] = sprintf("%.2f, %.4f%s", T, I, 2 * T > N ? sprintf(" (2T = %.2f > %s: extrapolated)", 2 * T, N) : "")
+			d[k] = f[p "data_T"] > 0 ? sprintf("%s, %.4f", f[p "data_T"], f[p "data_h"]) : sprintf("none within %s", N)
 		}
 		r = sprintf("%.4f; %.4f; %.4f", f["gauge_intensity"] / f["intensity"], g / h,
 			(kx * (lx / 2) ^ 2 + ky * (ly / 2) ^ 2) / (kx * (c / 2) ^ 2))
-		c98 = n98 ? sprintf("%d", n98) : sprintf("stays below (%.3f after %d)", pc, N)
+		c98 = n98 != "" ? n98 : sprintf("stays below (%.3f at %s)", pc, N)
 		printf "| %s | %s | %s | %s | %s | %s | %s |\n", v, s[0], d[0], s[1], d[1], r, c98
-	}' "$out/v$v/fit.txt" "$out/v$v/passes.txt"
+	}' "$out/v$v/fit.txt" "$out/v$v/curve.txt"
 done
 echo
 echo "(Closed form: with the last pass's curvatures kx, ky.  Plastic coverage:"
@@ -160,7 +174,7 @@ echo "demprofile's share of the region's top whose plastic strain exceeds"
 echo "profile.plastic_threshold (0.002 by default), the FE counterpart of the dimpled"
 echo "area of SAE J2277, where 100 % coverage is 98 % of the surface dimpled.)"
 echo
-hdr="| passes |" sep="|---|"
+hdr="| exposure n |" sep="|---|"
 for v in $vels; do hdr="$hdr v = $v m/s: gauge (mm) | gauge / arc height | plastic coverage |"; sep="$sep---|---|---|"; done
 echo "$hdr"; echo "$sep"
 join_passes 'sprintf(" %.5f | %.4f | %.3f |", c[6], c[3] > 0 ? c[6] / c[3] : 0, c[7])'
@@ -197,6 +211,6 @@ for v in $vels; do
 	echo "- v = $v m/s: $(grep '^demshot: cost:' "$out/v$v/demshot.log" | tail -n 1 | sed 's/^demshot: cost: //')"
 done
 echo
-echo "Plots: \`$out/saturation.png\` (arc height per pass), \`$out/profiles.png\`"
+echo "Plots: \`$out/saturation.png\` (arc height against exposure), \`$out/profiles.png\`"
 echo "(sxx and ep against depth per pass), \`$out/redistributed.png\` (sxx through"
 echo "the strip, imposed and redistributed)."

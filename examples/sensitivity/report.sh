@@ -38,7 +38,7 @@ h() { # h ROW V N: the arc height after N
 echo "# sensitivity: what moves the arc height (report of \`$out/\`)"
 echo
 echo "Written by report.sh from the runs in \`$out/\`: the reference scene"
-echo "(examples/airbus-strip/quick.yaml with $mesh elements in the impact area, $fdepth deep,"
+echo "(base.yaml, examples/airbus-strip/quick.yaml as of 2026-12-03, with $mesh elements in the impact area, $fdepth deep,"
 echo "Coulomb friction $mu between shot and block, demshot --accuracy coarse)"
 echo "with one modelling choice changed a row, arc height in mm over the 150 mm"
 echo "length of the free strip after n passes of 16 shots (n = $(echo $at | sed 's/ /, /g')),"

@@ -1,7 +1,7 @@
 #!/bin/sh
 # run.sh ROW V OUT PASSES "AT" - one row of the sensitivity study at one
-# velocity: the reference scene (../airbus-strip/quick.yaml) with one
-# modelling choice changed, through the pipeline
+# velocity: the reference scene (base.yaml, airbus-strip's quick.yaml as
+# the study ran it) with one modelling choice changed, through the pipeline
 #
 #   dempack shots | demshot | demprofile --pass all | demform --pass n (n in AT)
 #
@@ -19,15 +19,15 @@
 #
 # Environment: BIN (the programs), THREADS (demshot's threads; empty: the
 # scene's/all), SEED (dempack's; 1), MESH (the element size of the impact
-# area in mm; 0.1, quick.yaml's own), FRICTION (the reference's mu; 0,
-# quick.yaml's own).
+# area in mm; 0.1, base.yaml's own), FRICTION (the reference's mu; 0,
+# base.yaml's own).
 set -eu
 row=$1 v=$2 out=$3 passes=$4 at=$5
 BIN=${BIN:-../../bin}
 SEED=${SEED:-1}
 MESH=${MESH:-0.1}
 FRICTION=${FRICTION:-0}
-base=../airbus-strip/quick.yaml
+base=base.yaml
 d=$out/$row/v$v
 ref=$out/ref/v$v
 mkdir -p "$d"
