@@ -7,8 +7,9 @@ shift
 stat() { sed -n "s/^$2 *: //p" "build/fuzz/$1/default/fuzzer_stats"; }
 echo "# Fuzzing the readers (AFL++)"
 echo
-echo "Written by \`make fuzz FUZZ_TIME=$secs\` (tests/fuzz/run.sh) on $(date '+%F %H:%M')"
-echo "($(nproc) cores, one run at a time on one core; AFL++ $(stat "$1" afl_version),"
+start=$(stat "$1" start_time)
+echo "Written by \`make fuzz FUZZ_TIME=$secs\` (tests/fuzz/run.sh), runs from $(date -d "@$start" '+%F %H:%M')"
+echo "($(nproc) cores, one run at a time on one core; AFL++ $(stat "$1" afl_version | sed 's/^++//'),"
 echo "the harness tests/fuzz/fuzz.c built by afl-cc with AddressSanitizer and"
 echo "UBSan, so that a memory error or undefined behaviour counts as a crash)."
 echo "Seeds: tests/fuzz/corpus/TARGET; what crashes is kept there and replayed by"
