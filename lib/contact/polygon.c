@@ -407,38 +407,54 @@ static int chase(int n, const double (*P)[2], int m, const double (*Q)[2], olist
 }
 
 /* Ch. 4.3.2: V[k] against the window w (xmin, ymin, xmax, ymax), one side
- * at a time; a point is dropped when it and both its neighbours lie
- * strictly outside the side.  buf: two buffers of k points.  Returns the
- * points left (in *out), 0 when none lies inside a side. */
+ * at a time; a point is dropped when it and both its neighbours (in the
+ * polygon left by the sides before) lie strictly outside the side.  The
+ * sides' outcodes of every point first, then the passes on a list of
+ * indices, and the points left gathered at the end.  buf: room for 2 k
+ * points (the result, then the indices and codes).  Returns the points
+ * left (in buf, *out), 0 when the polygon has no point inside a side. */
 static int clip_window(int k, const double (*V)[2], const double w[4], double (*buf)[2],
                        const double (**out)[2])
 {
-	const double (*src)[2] = V;
-	double (*dst)[2] = buf, (*other)[2] = buf + k;
+	int k0 = k, *src = (int *)(buf + k), *dst = src + k;
+	unsigned char *code = (unsigned char *)(dst + k);
+	unsigned in = 0, outside = 0;
+	const double x0 = w[0], y0 = w[1], x1 = w[2], y1 = w[3];  /* not reloaded past the stores */
+	for (int i = 0; i < k; i++) {
+		double x = V[i][0], y = V[i][1];
+		unsigned c = (unsigned)(x < x0) | (unsigned)(y < y0) << 1 |
+		             (unsigned)(x > x1) << 2 | (unsigned)(y > y1) << 3;
+		code[i] = (unsigned char)c;
+		in |= ~c, outside |= c;
+		src[i] = i;
+	}
+	if ((in & 15) != 15)
+		return 0;  /* every point beyond one side */
 	for (int sd = 0; sd < 4; sd++) {
-		int ax = sd & 1, hi = sd >= 2;
-		double lim = w[sd];
-		int cnt = 0, any = 0;
-		/* outside: beyond the side, strictly */
-#define OUT(i) (hi ? src[i][ax] > lim : src[i][ax] < lim)
-		int op = OUT(k - 1), oc = OUT(0);
+		unsigned bit = 1u << sd;
+		if (!(outside & bit))
+			continue;  /* no point beyond this side: nothing to drop */
+		int cnt = 0;
+		unsigned op = code[src[k - 1]] & bit, oc = code[src[0]] & bit;
 		for (int i = 0; i < k; i++) {
-			int on = OUT(i + 1 == k ? 0 : i + 1);
-			if (!oc)
-				any = 1;
-			if (!(op && oc && on))
-				dst[cnt][0] = src[i][0], dst[cnt][1] = src[i][1], cnt++;
+			unsigned on = code[src[i + 1 == k ? 0 : i + 1]] & bit;
+			if (!(op & oc & on))
+				dst[cnt++] = src[i];
 			op = oc, oc = on;
 		}
-#undef OUT
-		if (!any)
-			return 0;
+		if (cnt == 0)
+			return 0;  /* the polygon left lies beyond this side */
 		k = cnt;
-		src = (const double (*)[2])dst;
-		double (*t)[2] = dst;
-		dst = other, other = t;
+		int *t = src;
+		src = dst, dst = t;
 	}
-	*out = src;
+	if (k == k0) {
+		*out = V;  /* nothing dropped */
+		return k;
+	}
+	for (int i = 0; i < k; i++)
+		buf[i][0] = V[src[i]][0], buf[i][1] = V[src[i]][1];
+	*out = (const double (*)[2])buf;
 	return k;
 }
 

@@ -20,15 +20,18 @@
  * axes, anticlockwise, starts at (a, 0) and has 4 k vertices.
  *
  * Overlap of two convex polygons P (n points) and Q (m points): the
- * intersection polygon (at most n + m points, anticlockwise, possibly with
- * repeated points), its area S and centroid, and for each of its edges
+ * intersection polygon (at most n + m points, anticlockwise, without
+ * repeated consecutive points but possibly with collinear ones), its area
+ * S and centroid, and for each of its edges
  * which polygon's boundary it lies on.  Two methods:
  *
  *   dem_polygon_chase   O'Rourke, Chien, Olson and Naddor's linear
  *                       algorithm (Box 4.2): one edge of each polygon,
- *                       advanced by the rules of Table 4.1 so that they
- *                       chase each other round both boundaries, at most
- *                       2 (n + m) steps.  With clip = 1 it first applies
+ *                       advanced so that they chase each other round both
+ *                       boundaries (O'Rourke et al.'s rule, which is Table
+ *                       4.1 but for six cells where the turning direction
+ *                       decides: polygon.c), at most 2 (n + m) steps to
+ *                       the first crossing.  With clip = 1 it first applies
  *                       the modification of Ch. 4.3.2: the window W is the
  *                       overlap of the two bounding boxes (none: no
  *                       overlap), and each polygon is clipped against each
