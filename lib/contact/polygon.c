@@ -206,20 +206,43 @@ static inline void cross_point(const double ps[2], const double pe[2], double d0
 
 /* ---- overlap: the reference, full Sutherland-Hodgman ------------------ */
 
+/* append X with the label of the edge after it, skipping an exact repeat
+ * of the last point (whose label is updated instead) */
+static void sh_emit(double (*v)[2], int *lab, int *cnt, int cap, const double X[2], int label)
+{
+	int k = *cnt;
+	if (k > 0 && v[k - 1][0] == X[0] && v[k - 1][1] == X[1]) {
+		lab[k - 1] = label;
+		return;
+	}
+	if (k < cap)
+		v[k][0] = X[0], v[k][1] = X[1], lab[k] = label;
+	*cnt = k + 1;
+}
+
+/* Each point of the clipped polygon carries the label of the edge after it:
+ * i < n when that edge lies on P's edge i, n + j on Q's edge j.  A crossing
+ * is then computed as the chase computes it, from P's whole edge (not from
+ * the piece an earlier line left), and where a piece of Q's edge j - 1
+ * (or j + 1) meets the line of edge j the crossing is Q's point between
+ * them, exactly: so both methods give the same points to the last bit
+ * where they can, and Q's points are not recomputed from two nearly
+ * parallel lines. */
 int dem_polygon_clip(int n, const double (*P)[2], int m, const double (*Q)[2],
                      double (*v)[2], unsigned char *side, double (*work)[2],
                      dem_overlap_t *o)
 {
 	int cap = n + m;
 	double (*cur)[2] = v, (*nxt)[2] = work;
-	unsigned char *cs = side, *ns = (unsigned char *)(work + cap);
+	int *cl = (int *)(work + cap), *nl = cl + cap;
 	int cn = n;
 	for (int i = 0; i < n; i++)
-		cur[i][0] = P[i][0], cur[i][1] = P[i][1], cs[i] = 0;
+		cur[i][0] = P[i][0], cur[i][1] = P[i][1], cl[i] = i;
 	o->steps = 0;
 	for (int j = 0; j < m && cn > 0; j++) {
-		const double *qs = Q[j], *qe = Q[j + 1 == m ? 0 : j + 1];
-		olist_t l = { nxt, ns, 0, cap };
+		int jn = j + 1 == m ? 0 : j + 1, jp = j == 0 ? m - 1 : j - 1;
+		const double *qs = Q[j], *qe = Q[jn];
+		int nn = 0;
 		double dprev = orient(qs, qe, cur[cn - 1]);
 		for (int i = 0; i < cn; i++) {
 			/* the edge k -> i of the current polygon, then point i */
@@ -228,31 +251,42 @@ int dem_polygon_clip(int n, const double (*P)[2], int m, const double (*Q)[2],
 			o->steps++;
 			if ((dprev < 0 && d > 0) || (dprev > 0 && d < 0)) {
 				double X[2];
-				cross_point(cur[k], cur[i], dprev, d, X);
+				int lk = cl[k];
+				const double *ps = P[lk < n ? lk : 0], *pe = P[lk + 1 < n ? lk + 1 : 0];
+				double d0 = lk < n ? orient(qs, qe, ps) : 0, d1 = lk < n ? orient(qs, qe, pe) : 0;
+				if (lk < n && d0 != d1) {
+					cross_point(ps, pe, d0, d1, X);
+				} else if (lk - n == jp) {
+					X[0] = qs[0], X[1] = qs[1];
+				} else if (lk - n == jn) {
+					X[0] = qe[0], X[1] = qe[1];
+				} else {
+					cross_point(cur[k], cur[i], dprev, d, X);
+				}
 				/* entering: the subject's edge follows; leaving: the clip line */
-				ol_emit(&l, X, d > 0 ? cs[k] : 1);
+				sh_emit(nxt, nl, &nn, cap, X, d > 0 ? lk : n + j);
 			}
 			if (d >= 0) {
 				int inext = i + 1 == cn ? 0 : i + 1;
 				double dn = orient(qs, qe, cur[inext]);
 				/* on the line with the next point outside: the clip line follows */
-				ol_emit(&l, cur[i], d == 0 && dn < 0 ? 1 : cs[i]);
+				sh_emit(nxt, nl, &nn, cap, cur[i], d == 0 && dn < 0 ? n + j : cl[i]);
 			}
 			dprev = d;
 		}
 		/* the list's last point may repeat its first */
-		if (l.n > 1 && l.v[l.n - 1][0] == l.v[0][0] && l.v[l.n - 1][1] == l.v[0][1])
-			l.n--;
-		cn = l.n < 3 ? 0 : l.n;
+		if (nn > 1 && nxt[nn - 1][0] == nxt[0][0] && nxt[nn - 1][1] == nxt[0][1])
+			nn--;
+		cn = nn < 3 ? 0 : nn;
 		double (*t)[2] = cur;
 		cur = nxt, nxt = t;
-		unsigned char *ts = cs;
-		cs = ns, ns = ts;
+		int *tl = cl;
+		cl = nl, nl = tl;
 	}
-	if (cur != v) {
+	if (cur != v)
 		memcpy(v, cur, (size_t)cn * sizeof *v);
-		memcpy(side, cs, (size_t)cn);
-	}
+	for (int i = 0; i < cn; i++)
+		side[i] = cl[i] >= n;
 	olist_t l = { v, side, cn, cap };
 	return ol_finish(&l, o);
 }
