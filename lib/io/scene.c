@@ -876,6 +876,8 @@ static int load_uses(dem_scene_t *s, dem_error_t *e)
 	return code;
 }
 
+static int check_sections(const dem_scene_t *s, dem_error_t *e);
+
 int dem_scene_load(dem_scene_t **sp, const char *path, dem_error_t *e)
 {
 	dem_scene_t *s = calloc(1, sizeof *s);
@@ -902,6 +904,10 @@ int dem_scene_load(dem_scene_t **sp, const char *path, dem_error_t *e)
 			node_free(s->root);
 			s->root = root;
 		}
+		/* a misspelt section first: its own keys would otherwise be
+		 * reported missing from the section meant */
+		if (code == DEM_OK)
+			code = check_sections(s, e);
 		if (code == DEM_OK)
 			code = load_uses(s, e);
 		if (code != DEM_OK) {
@@ -1836,19 +1842,66 @@ static int check_map(const dem_scene_t *s, const struct node *map,
 	return code;
 }
 
+/* The edit distance of a and b (insertions, deletions, substitutions
+ * and swaps of two neighbours), or 3 when it is more than 2: enough to
+ * tell a typo from another word. */
+static int typo_distance(const char *a, const char *b)
+{
+	enum { MAXLEN = 32 };
+	size_t m = strlen(a), n = strlen(b);
+	int d[MAXLEN + 1][MAXLEN + 1];
+
+	if (m > MAXLEN || n > MAXLEN || (m > n ? m - n : n - m) > 2)
+		return 3;
+	for (size_t i = 0; i <= m; i++)
+		for (size_t j = 0; j <= n; j++) {
+			if (!i || !j) {
+				d[i][j] = (int)(i + j);
+				continue;
+			}
+			int c = d[i - 1][j - 1] + (a[i - 1] != b[j - 1]);
+			if (d[i - 1][j] + 1 < c)
+				c = d[i - 1][j] + 1;
+			if (d[i][j - 1] + 1 < c)
+				c = d[i][j - 1] + 1;
+			if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] &&
+			    d[i - 2][j - 2] + 1 < c)
+				c = d[i - 2][j - 2] + 1;
+			d[i][j] = c;
+		}
+	return d[m][n] < 3 ? d[m][n] : 3;
+}
+
 static int unknown_section(const dem_scene_t *s, const struct entry *en,
 			   dem_error_t *e)
 {
-	char known[512];
+	char known[512], hint[64] = "";
 	size_t i, k = 0;
+	/* a typo: one slip in a short word, two in a longer one */
+	int best = strlen(en->key) <= 4 ? 2 : 3;
 
 	known[0] = '\0';
-	for (i = 0; known_sections[i] && k < sizeof known; i++)
+	for (i = 0; known_sections[i] && k < sizeof known; i++) {
+		int dist = typo_distance(en->key, known_sections[i]);
+		if (dist < best) {
+			best = dist;
+			snprintf(hint, sizeof hint, " (did you mean '%s'?)", known_sections[i]);
+		}
 		k += (size_t)snprintf(known + k, sizeof known - k, "%s%s",
 				      i ? ", " : "", known_sections[i]);
+	}
 	return fail_at(s, en->val->file, en->val->origin, en->line, en->col, e,
-		       "unknown section '%s'; known sections: %s", en->key,
-		       known);
+		       "unknown section '%s'%s; known sections: %s", en->key,
+		       hint, known);
+}
+
+/* Every top-level key is a known section. */
+static int check_sections(const dem_scene_t *s, dem_error_t *e)
+{
+	for (size_t i = 0; i < s->root->n; i++)
+		if (!in_list(known_sections, s->root->ent[i].key))
+			return unknown_section(s, &s->root->ent[i], e);
+	return DEM_OK;
 }
 
 int dem_scene_check(const dem_scene_t *s, const char *const *sections,

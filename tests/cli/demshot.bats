@@ -119,6 +119,25 @@ YAML
 	[ "${lines[-1]}" = "3 1" ]
 }
 
+@test "demshot: a misspelt section is reported first, where it is, not as missing keys" {
+	# the block section spelt 'blokc': without the check at load the first
+	# message was 'block.size: missing'
+	sed 's/^block:/blokc:/' "$T/pulse.yaml" > "$T/blokc.yaml"
+	run --separate-stderr demshot -s "$T/blokc.yaml"
+	echo "$stderr"
+	[ "$status" -eq 1 ]
+	[ -z "$output" ]
+	[ "$(grep -c . <<< "$stderr")" -eq 1 ]
+	[[ $stderr == "demshot: $T/blokc.yaml:7:1: unknown section 'blokc' (did you mean 'block'?); known sections: "* ]]
+	[[ $stderr != *missing* ]]
+	# the same for every program that reads a scene
+	for p in dempack demdetect demprofile demform; do
+		run --separate-stderr "$p" -s "$T/blokc.yaml" --dump-scene
+		[ "$status" -eq 1 ]
+		[[ $stderr == "$p: $T/blokc.yaml:7:1: unknown section 'blokc'"* ]]
+	done
+}
+
 @test "demshot: scene errors are bad input naming the key and its place" {
 	sed '/end:/d' "$T/pulse.yaml" > "$T/noend.yaml"
 	run --separate-stderr demshot -s "$T/noend.yaml"
