@@ -2,7 +2,7 @@
  * is tested.  O(N^2) time, no extra memory; the reference every other
  * algorithm is tested against (DESIGN.md, "Verification references").
  */
-#include "detect/detect.h"
+#include "detect/algo.h"
 
 int dem_detect_brute(const dem_boxes_t *b, dem_pairs_t *out,
 		     dem_detect_stats_t *st)

@@ -27,7 +27,7 @@
  * detects every step reuses them.  The instantiations for 1, 2 and 3
  * dimensions come from dcell_impl.h.
  */
-#include "detect/detect.h"
+#include "detect/algo.h"
 
 #include <assert.h>
 #include <math.h>

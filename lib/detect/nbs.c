@@ -23,7 +23,7 @@
  * the list itself is walked instead, which bounds the work for very
  * unequal sizes by that of brute force within the reach.
  */
-#include "detect/detect.h"
+#include "detect/algo.h"
 
 #include <math.h>
 #include <stdlib.h>

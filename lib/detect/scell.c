@@ -24,7 +24,7 @@
  * the size ratio, as the thesis says of this method: one huge box makes
  * every box scan most of the grid.
  */
-#include "detect/detect.h"
+#include "detect/algo.h"
 
 #include <math.h>
 #include <stdlib.h>
