@@ -108,7 +108,7 @@
 
 #include "core/error.h"
 #include "fe/material.h"
-#include "fe/mesh.h"
+#include "mesh/mesh.h"
 
 typedef enum dem_fe_rule {
 	DEM_FE_1PT = 0,   /* one point + Flanagan-Belytschko hourglass control */

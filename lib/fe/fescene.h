@@ -22,8 +22,8 @@
 #define DEM_FE_FESCENE_H
 
 #include "fe/material.h"
-#include "fe/mesh.h"
 #include "io/scene.h"
+#include "mesh/mesh.h"
 
 /* Read the material section and build the material.  need_rho: the
  * density is required (explicit dynamics); otherwise it defaults to 0.

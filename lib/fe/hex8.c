@@ -29,6 +29,7 @@
 
 #include "fe/dense.h"
 #include "fe/simd.h"
+#include "mesh/hex.h"
 
 const double dem_hex8_node_xi[8] = { -1, 1, 1, -1, -1, 1, 1, -1 };
 const double dem_hex8_node_eta[8] = { -1, -1, 1, 1, -1, -1, 1, 1 };
@@ -37,99 +38,12 @@ const double dem_hex8_node_zeta[8] = { -1, -1, -1, -1, 1, 1, 1, 1 };
 #define SQRT8 2.8284271247461900976
 #define GAUSS 0.57735026918962576451 /* 1/sqrt(3) */
 
-/* a[k] = sum_I Lambda_k(I) u[I] (no 1/8): butterflies along xi, eta, zeta. */
-static inline void walsh(const double *u, double *a)
-{
-	double sa = u[1] + u[0], da = u[1] - u[0]; /* eta -, zeta - */
-	double sb = u[2] + u[3], db = u[2] - u[3]; /* eta +, zeta - */
-	double sc = u[5] + u[4], dc = u[5] - u[4]; /* eta -, zeta + */
-	double sd = u[6] + u[7], dd = u[6] - u[7]; /* eta +, zeta + */
-	double ssm = sb + sa, sdm = sb - sa, dsm = db + da, ddm = db - da;
-	double ssp = sd + sc, sdp = sd - sc, dsp = dd + dc, ddp = dd - dc;
-	a[0] = ssp + ssm;
-	a[3] = ssp - ssm;
-	a[2] = sdp + sdm;
-	a[4] = sdp - sdm;
-	a[1] = dsp + dsm;
-	a[5] = dsp - dsm;
-	a[6] = ddp + ddm;
-	a[7] = ddp - ddm;
-}
-
-/* u[I] = sum_k Lambda_k(I) F[k]: the butterflies backwards. */
-static inline void walsh_inv(const double *F, double *u)
-{
-	double ssp = F[0] + F[3], ssm = F[0] - F[3];
-	double sdp = F[2] + F[4], sdm = F[2] - F[4];
-	double dsp = F[1] + F[5], dsm = F[1] - F[5];
-	double ddp = F[6] + F[7], ddm = F[6] - F[7];
-	double sd = ssp + sdp, sc = ssp - sdp, dd = dsp + ddp, dc = dsp - ddp;
-	double sb = ssm + sdm, sa = ssm - sdm, db = dsm + ddm, da = dsm - ddm;
-	u[6] = sd + dd;
-	u[7] = sd - dd;
-	u[5] = sc + dc;
-	u[4] = sc - dc;
-	u[2] = sb + db;
-	u[3] = sb - db;
-	u[1] = sa + da;
-	u[0] = sa - da;
-}
-
-/* Modal coefficients a[k][i] of a component-major nodal field. */
-static inline void modes(const double *x, double a[8][3])
-{
-	double t[8];
-	for (int i = 0; i < 3; i++) {
-		walsh(x + 8 * i, t);
-		for (int k = 0; k < 8; k++)
-			a[k][i] = 0.125 * t[k];
-	}
-}
-
-static inline void cross_add(const double *p, const double *q, double s, double *r)
-{
-	r[0] += s * (p[1] * q[2] - p[2] * q[1]);
-	r[1] += s * (p[2] * q[0] - p[0] * q[2]);
-	r[2] += s * (p[0] * q[1] - p[1] * q[0]);
-}
-
-static inline double triple(const double *p, const double *q, const double *r)
-{
-	return p[0] * (q[1] * r[2] - q[2] * r[1]) + p[1] * (q[2] * r[0] - q[0] * r[2]) +
-	       p[2] * (q[0] * r[1] - q[1] * r[0]);
-}
-
-/* Volume gradient modes c_k = dV/da_k and the volume (header comment). */
-/* (a is not written; no const: C11 cannot pass double[8][3] as const) */
-static void volume_modes(double a[8][3], double c[8][3], double *vol)
-{
-	const double e = 8.0, t = 8.0 / 3;
-	memset(c, 0, 8 * sizeof c[0]);
-	cross_add(a[2], a[3], e, c[1]);
-	cross_add(a[6], a[5], t, c[1]);
-	cross_add(a[3], a[1], e, c[2]);
-	cross_add(a[4], a[6], t, c[2]);
-	cross_add(a[1], a[2], e, c[3]);
-	cross_add(a[5], a[4], t, c[3]);
-	cross_add(a[6], a[2], t, c[4]);
-	cross_add(a[3], a[5], t, c[4]);
-	cross_add(a[1], a[6], t, c[5]);
-	cross_add(a[4], a[3], t, c[5]);
-	cross_add(a[5], a[1], t, c[6]);
-	cross_add(a[2], a[4], t, c[6]);
-	/* V is homogeneous of degree 3 in the a_k (k >= 1): V = 1/3 sum a_k . c_k */
-	double v = 0;
-	for (int k = 1; k <= 6; k++)
-		v += a[k][0] * c[k][0] + a[k][1] * c[k][1] + a[k][2] * c[k][2];
-	*vol = v / 3;
-}
-
 int dem_hex8_1pt_geom(const double x[24], dem_hex8_1pt_t *g)
 {
-	modes(x, g->a);
-	volume_modes(g->a, g->c, &g->vol);
+	dem_hex_modes(x, g->a);
+	dem_hex_volume_modes(g->a, g->c, &g->vol);
 	/* det J at the centre is [a1, a2, a3] */
-	double j0 = triple(g->a[1], g->a[2], g->a[3]);
+	double j0 = dem_hex_triple(g->a[1], g->a[2], g->a[3]);
 	if (!(g->vol > 0) || !(j0 > 0))
 		return DEM_HEX8_INVERTED;
 	return DEM_HEX8_OK;
@@ -138,7 +52,7 @@ int dem_hex8_1pt_geom(const double x[24], dem_hex8_1pt_t *g)
 void dem_hex8_1pt_rate(dem_hex8_1pt_t *g, const double v[24])
 {
 	double av[8][3];
-	modes(v, av);
+	dem_hex_modes(v, av);
 	/* L = 1/V sum_I v_I (x) b_I = 1/V sum_k av_k (x) c_k */
 	double r = 1 / g->vol;
 	for (int i = 0; i < 3; i++)
@@ -206,7 +120,7 @@ void dem_hex8_1pt_force(const dem_hex8_1pt_t *g, const double sig[6],
 			F[i][l] += 0.125 * (T[3 * i] * cl[0] + T[3 * i + 1] * cl[1] + T[3 * i + 2] * cl[2]);
 	}
 	for (int i = 0; i < 3; i++)
-		walsh_inv(F[i], f + 8 * i);
+		dem_hex_walsh_inv(F[i], f + 8 * i);
 }
 
 /* b . b = sum_I |b_I|^2 = 1/8 sum_k |c_k|^2 (orthogonality of the modes). */
@@ -249,7 +163,7 @@ void dem_hex8_1pt_grad(const dem_hex8_1pt_t *g, double B[24])
 	for (int i = 0; i < 3; i++) {
 		for (int k = 0; k < 8; k++)
 			F[k] = s * g->c[k][i];
-		walsh_inv(F, B + 8 * i);
+		dem_hex_walsh_inv(F, B + 8 * i);
 	}
 }
 
@@ -624,9 +538,9 @@ static inline double invert(const double u[3], const double v[3], const double w
 			    double Ji[9])
 {
 	memset(Ji, 0, 9 * sizeof *Ji);
-	cross_add(v, w, 1, Ji);
-	cross_add(w, u, 1, Ji + 3);
-	cross_add(u, v, 1, Ji + 6);
+	dem_hex_cross_add(v, w, 1, Ji);
+	dem_hex_cross_add(w, u, 1, Ji + 3);
+	dem_hex_cross_add(u, v, 1, Ji + 6);
 	double det = u[0] * Ji[0] + u[1] * Ji[1] + u[2] * Ji[2];
 	double r = 1 / det;
 	for (int i = 0; i < 9; i++)
@@ -636,9 +550,9 @@ static inline double invert(const double u[3], const double v[3], const double w
 
 int dem_hex8_full_geom(const double x[24], dem_hex8_full_t *g)
 {
-	modes(x, g->a);
-	volume_modes(g->a, g->c, &g->vol);
-	int bad = !(g->vol > 0) || !(triple(g->a[1], g->a[2], g->a[3]) > 0);
+	dem_hex_modes(x, g->a);
+	dem_hex_volume_modes(g->a, g->c, &g->vol);
+	int bad = !(g->vol > 0) || !(dem_hex_triple(g->a[1], g->a[2], g->a[3]) > 0);
 	for (int p = 0; p < 8; p++) {
 		double xi, eta, zeta, u[3], v[3], w[3];
 		gauss_xi(p, &xi, &eta, &zeta);
@@ -653,7 +567,7 @@ int dem_hex8_full_geom(const double x[24], dem_hex8_full_t *g)
 void dem_hex8_full_rate(dem_hex8_full_t *g, const double v[24], int bbar)
 {
 	double av[8][3];
-	modes(v, av);
+	dem_hex_modes(v, av);
 	double trm = 0;
 	if (bbar) {
 		for (int k = 1; k <= 6; k++)
@@ -722,7 +636,7 @@ void dem_hex8_full_force(const dem_hex8_full_t *g, const double sig[48],
 	for (int i = 0; i < 3; i++) {
 		for (int k = 1; k <= 7; k++)
 			F[i][k] = 0.125 * (F[i][k] + (k <= 6 ? pm * g->c[k][i] : 0));
-		walsh_inv(F[i], f + 8 * i);
+		dem_hex_walsh_inv(F[i], f + 8 * i);
 	}
 }
 
@@ -933,7 +847,7 @@ int dem_hex8_condense(int eas, double *Kf, int nd, double *r, double fint[24],
 void dem_hex8_gauss_points(const double x[24], double xg[24])
 {
 	double a[8][3];
-	modes(x, a);
+	dem_hex_modes(x, a);
 	for (int p = 0; p < 8; p++) {
 		double xi, eta, zeta;
 		gauss_xi(p, &xi, &eta, &zeta);
@@ -982,7 +896,7 @@ int dem_hex8_dt_crit(const double x[24], double c, double *dt)
 			d1[i] = x[8 * i + n[2]] - x[8 * i + n[0]];
 			d2[i] = x[8 * i + n[3]] - x[8 * i + n[1]];
 		}
-		cross_add(d1, d2, 0.5, A);
+		dem_hex_cross_add(d1, d2, 0.5, A);
 		amax = fmax(amax, sqrt(A[0] * A[0] + A[1] * A[1] + A[2] * A[2]));
 	}
 	if (!(amax > 0) || !(c > 0))

@@ -28,8 +28,8 @@
 
 #include "core/error.h"
 #include "fe/hex8.h"
-#include "fe/mesh.h"
 #include "io/profile.h"
+#include "mesh/mesh.h"
 
 typedef struct dem_form dem_form_t;
 

@@ -2,7 +2,7 @@
 #include "io/profile.h"
 
 #include "core/consts.h"
-#include "fe/hex8.h"
+#include "mesh/hex.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -358,14 +358,13 @@ static void elem_geom(const dem_mesh_t *m, size_t el, double c[3], double *vol)
 		return;
 	}
 	double x[24];
-	dem_hex8_1pt_t g;
 	c[0] = c[1] = c[2] = 0;
 	for (int a = 0; a < 8; a++)
 		for (int d = 0; d < 3; d++) {
 			x[8 * d + a] = m->X[3 * (size_t)m->hex[8 * el + a] + d];
 			c[d] += 0.125 * x[8 * d + a];
 		}
-	*vol = dem_hex8_1pt_geom(x, &g) == DEM_HEX8_OK ? g.vol : 0;
+	*vol = dem_hex_volume(x);
 }
 
 static int in_region(const dem_profile_opts_t *o, double x, double y)

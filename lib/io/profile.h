@@ -20,8 +20,8 @@
 #include <stddef.h>
 
 #include "core/error.h"
-#include "fe/mesh.h"
 #include "io/stream.h"
+#include "mesh/mesh.h"
 
 /* One pass's profile, in SI units. */
 typedef struct dem_profile {

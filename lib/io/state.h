@@ -36,8 +36,8 @@
 #include <stddef.h>
 
 #include "core/error.h"
-#include "fe/mesh.h"
 #include "io/stream.h"
+#include "mesh/mesh.h"
 
 /* Record codes (column rec). */
 enum { DEM_STATE_NODE = 1, DEM_STATE_HEX, DEM_STATE_FRAME, DEM_STATE_DISP,

@@ -24,7 +24,7 @@
 #define DEM_IO_VTU_H
 
 #include "core/error.h"
-#include "fe/mesh.h"
+#include "mesh/mesh.h"
 
 /* The fields to write; any may be NULL (left out). */
 typedef struct dem_vtu_fields {

@@ -69,7 +69,7 @@
 
 #include "contact/model.h"
 #include "core/error.h"
-#include "fe/mesh.h"
+#include "mesh/mesh.h"
 #include "pack/shots.h"
 
 typedef struct dem_shotset_opts {

@@ -1,5 +1,5 @@
 /* gridmesh.h - a structured mesh of the tensor grid gx x gy x gz (nx, ny,
- * nz elements), numbered as fe/mesh.h says, built here so that a test of a
+ * nz elements), numbered as mesh/mesh.h says, built here so that a test of a
  * reader or a profile does not depend on the mesher; free it with
  * dem_mesh_free(). */
 #ifndef DEM_TEST_GRIDMESH_H
@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "fe/mesh.h"
+#include "mesh/mesh.h"
 
 static void make_mesh(dem_mesh_t *m, int nx, int ny, int nz, const double *gx,
 		      const double *gy, const double *gz)

@@ -20,7 +20,7 @@
 
 #include "fe/explicit.h"
 #include "fe/material.h"
-#include "fe/mesh.h"
+#include "mesh/mesh.h"
 
 static void alu(dem_mat_t *m, double sy0)
 {

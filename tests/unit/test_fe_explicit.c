@@ -37,7 +37,7 @@
 #include "fe/explicit.h"
 #include "fe/hex8.h"
 #include "fe/material.h"
-#include "fe/mesh.h"
+#include "mesh/mesh.h"
 
 #define GPA 1e9
 #define MPA 1e6

@@ -15,7 +15,7 @@
 
 #include "fe/fescene.h"
 #include "fe/hex8.h"
-#include "fe/mesh.h"
+#include "mesh/mesh.h"
 
 /* A uniform axis: fine region = whole box. */
 static void test_axis_uniform(void **state)

@@ -34,7 +34,7 @@
 
 #include "fe/explicit.h"
 #include "fe/material.h"
-#include "fe/mesh.h"
+#include "mesh/mesh.h"
 
 #define NX 8
 #define NY 8

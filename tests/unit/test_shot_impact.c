@@ -46,7 +46,7 @@
 #include "core/consts.h"
 #include "fe/explicit.h"
 #include "fe/material.h"
-#include "fe/mesh.h"
+#include "mesh/mesh.h"
 #include "shot/shotset.h"
 
 /* Under the sanitizers (minutes a run) the slow sweeps run their first

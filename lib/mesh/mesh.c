@@ -1,5 +1,5 @@
 /* mesh.c - structured hexahedral meshes of a box (see mesh.h). */
-#include "fe/mesh.h"
+#include "mesh/mesh.h"
 
 #include <math.h>
 #include <stdio.h>
