@@ -669,40 +669,19 @@ int dem_hex8_static(const dem_mat_t *m, dem_hex8_rule_t rule, const double X[24]
 	/* strain-displacement blocks at each Gauss point */
 	double Bp[8][NPN][6][3];
 	for (int p = 0; p < 8; p++) {
-		double gx[3];
-		gauss_xi(p, &gx[0], &gx[1], &gx[2]);
-		const double *Ji = g.Jinv[p];
-		for (int I = 0; I < 8; I++) {
-			/* grad_xi N_I, then grad_x N_I = J^-T grad_xi N_I */
-			double xI = dem_hex8_node_xi[I], eI = dem_hex8_node_eta[I], zI = dem_hex8_node_zeta[I];
-			double n0 = 0.125 * xI * (1 + gx[1] * eI) * (1 + gx[2] * zI);
-			double n1 = 0.125 * eI * (1 + gx[0] * xI) * (1 + gx[2] * zI);
-			double n2 = 0.125 * zI * (1 + gx[0] * xI) * (1 + gx[1] * eI);
-			double b[3];
-			for (int j = 0; j < 3; j++)
-				b[j] = Ji[j] * n0 + Ji[3 + j] * n1 + Ji[6 + j] * n2;
-			bblock(b[0], b[1], b[2], Bp[p][I]);
-			if (rule == DEM_HEX8_BBAR) {
+		double b[NPN][3];
+		dem_hex8_grads(&g, p, eas, j0, J0i, b);
+		for (int I = 0; I < nb; I++)
+			bblock(b[I][0], b[I][1], b[I][2], Bp[p][I]);
+		if (rule == DEM_HEX8_BBAR)
+			for (int I = 0; I < 8; I++)
 				/* volumetric strain from the mean gradient (Hughes 1980) */
 				for (int j = 0; j < 3; j++) {
-					double dv = (bm[8 * j + I] - b[j]) / 3;
+					double dv = (bm[8 * j + I] - b[I][j]) / 3;
 					Bp[p][I][0][j] += dv;
 					Bp[p][I][1][j] += dv;
 					Bp[p][I][2][j] += dv;
 				}
-			}
-		}
-		if (eas) {
-			/* mode 1 - xi_m^2: d/dxi_m = -2 xi_m, mapped with J0 and
-			 * scaled by j0 / j so that its integral over the element
-			 * vanishes (the patch test condition) */
-			double s = j0 / g.wdet[p];
-			for (int mm = 0; mm < 3; mm++) {
-				double d = -2 * gx[mm] * s;
-				bblock(d * J0i[3 * mm], d * J0i[3 * mm + 1], d * J0i[3 * mm + 2],
-				       Bp[p][8 + mm]);
-			}
-		}
 	}
 
 	/* local dofs: pseudo-node-major 3 n + i; the nodal ones from du */
@@ -719,8 +698,9 @@ int dem_hex8_static(const dem_mat_t *m, dem_hex8_rule_t rule, const double X[24]
 	 * plain iteration cycle, so steps that do not reduce |r_a| are
 	 * halved (backtracking on the residual norm). */
 	double Dg[8][36], r[3 * NPN];
-	double wpl = 0, rprev = 0, step = 1, a0[9] = { 0 }, da[9] = { 0 };
-	int it, maxit = eas ? 60 : 1;
+	double wpl = 0;
+	dem_hex8_modes_t mi = { .step = 1 };
+	int it, maxit = eas ? DEM_HEX8_MODES_MAXIT : 1;
 	for (it = 0; it < maxit; it++) {
 		if (eas)
 			for (int a = 0; a < 9; a++)
@@ -752,60 +732,110 @@ int dem_hex8_static(const dem_mat_t *m, dem_hex8_rule_t rule, const double X[24]
 		}
 		if (!eas)
 			break;
-		/* converged when the mode residual is negligible against the
-		 * element's stress resultant (N) */
-		double h3 = cbrt(g.vol);
-		double tol = 1e-11 * ref / h3 + 1e-15 * m->E * h3 * h3;
-		double rmax = 0, rn = 0;
-		for (int a = 0; a < 9; a++) {
-			rmax = fmax(rmax, fabs(r[24 + a]));
-			rn += r[24 + a] * r[24 + a];
-		}
-		rn = sqrt(rn);
-		if (rmax <= tol)
+		int next = dem_hex8_modes_check(&mi, it, r + 24, ref, g.vol, m->E, h->alpha);
+		if (next == DEM_HEX8_MODES_DONE)
 			break;
-		if (it > 0 && rn > (1 - 1e-4 * step) * rprev && step > 1.0 / 64) {
-			step *= 0.5;
-			for (int a = 0; a < 9; a++)
-				h->alpha[a] = a0[a] - step * da[a];
+		if (next == DEM_HEX8_MODES_HALVED)
 			continue;
-		}
 		/* Newton step on the modes: K_aa dalpha = -r_a */
 		double Kaa[81] = { 0 };
 		for (int p = 0; p < 8; p++)
 			add_btdb(3, &Bp[p][8], Dg[p], g.wdet[p], Kaa);
-		for (int a = 0; a < 9; a++)
-			da[a] = r[24 + a];
-		if (dem_dense_solve(9, Kaa, 1, da))
+		if (dem_hex8_modes_newton(&mi, Kaa, r + 24, h->alpha))
 			return DEM_HEX8_NOCONV;
-		memcpy(a0, h->alpha, sizeof a0);
-		rprev = rn;
-		step = 1;
-		for (int a = 0; a < 9; a++)
-			h->alpha[a] = a0[a] - da[a];
 	}
 	if (eas && it == maxit)
 		return DEM_HEX8_NOCONV;
 	if (wp)
 		*wp = wpl;
 
-	if (!K) {
-		for (int I = 0; I < 8; I++)
-			for (int i = 0; i < 3; i++)
-				fint[8 * i + I] = r[3 * I + i];
-		return DEM_HEX8_OK;
-	}
 	double Kf[3 * NPN * 3 * NPN];
-	memset(Kf, 0, sizeof Kf);
-	for (int p = 0; p < 8; p++)
-		add_btdb(nb, Bp[p], Dg[p], g.wdet[p], Kf);
+	if (K) {
+		memset(Kf, 0, sizeof Kf);
+		for (int p = 0; p < 8; p++)
+			add_btdb(nb, Bp[p], Dg[p], g.wdet[p], Kf);
+	}
 	return dem_hex8_condense(eas, Kf, nd, r, fint, K);
+}
+
+/* The gradients of the pseudo-nodes at Gauss point p (hex8.h). */
+void dem_hex8_grads(const dem_hex8_full_t *g, int p, int eas, double j0,
+		    const double J0i[9], double b[][3])
+{
+	double gx[3];
+	gauss_xi(p, &gx[0], &gx[1], &gx[2]);
+	const double *Ji = g->Jinv[p];
+	for (int I = 0; I < 8; I++) {
+		/* grad_xi N_I, then grad_x N_I = J^-T grad_xi N_I */
+		double xI = dem_hex8_node_xi[I], eI = dem_hex8_node_eta[I], zI = dem_hex8_node_zeta[I];
+		double n0 = 0.125 * xI * (1 + gx[1] * eI) * (1 + gx[2] * zI);
+		double n1 = 0.125 * eI * (1 + gx[0] * xI) * (1 + gx[2] * zI);
+		double n2 = 0.125 * zI * (1 + gx[0] * xI) * (1 + gx[1] * eI);
+		for (int j = 0; j < 3; j++)
+			b[I][j] = Ji[j] * n0 + Ji[3 + j] * n1 + Ji[6 + j] * n2;
+	}
+	if (!eas)
+		return;
+	/* mode 1 - xi_m^2: d/dxi_m = -2 xi_m, mapped with J0 and scaled by
+	 * j0 / j so that its integral over the element vanishes (the patch
+	 * test condition) */
+	double s = j0 / g->wdet[p];
+	for (int mm = 0; mm < 3; mm++) {
+		double d = -2 * gx[mm] * s;
+		for (int j = 0; j < 3; j++)
+			b[8 + mm][j] = d * J0i[3 * mm + j];
+	}
+}
+
+/* The local iteration on the modes (hex8.h): converged when the mode
+ * residual is negligible against the element's stress resultant (N);
+ * steps that do not reduce |r_a| are halved (backtracking). */
+int dem_hex8_modes_check(dem_hex8_modes_t *mi, int it, const double ra[9],
+			 double ref, double vol, double E, double alpha[9])
+{
+	double h3 = cbrt(vol);
+	double tol = 1e-11 * ref / h3 + 1e-15 * E * h3 * h3;
+	double rmax = 0, rn = 0;
+	for (int a = 0; a < 9; a++) {
+		rmax = fmax(rmax, fabs(ra[a]));
+		rn += ra[a] * ra[a];
+	}
+	mi->rn = sqrt(rn);
+	if (rmax <= tol)
+		return DEM_HEX8_MODES_DONE;
+	if (it > 0 && mi->rn > (1 - 1e-4 * mi->step) * mi->rprev && mi->step > 1.0 / 64) {
+		mi->step *= 0.5;
+		for (int a = 0; a < 9; a++)
+			alpha[a] = mi->a0[a] - mi->step * mi->da[a];
+		return DEM_HEX8_MODES_HALVED;
+	}
+	return DEM_HEX8_MODES_NEWTON;
+}
+
+int dem_hex8_modes_newton(dem_hex8_modes_t *mi, double Kaa[81], const double ra[9],
+			  double alpha[9])
+{
+	memcpy(mi->da, ra, sizeof mi->da);
+	if (dem_dense_solve(9, Kaa, 1, mi->da))
+		return DEM_HEX8_NOCONV;
+	memcpy(mi->a0, alpha, sizeof mi->a0);
+	mi->rprev = mi->rn;
+	mi->step = 1;
+	for (int a = 0; a < 9; a++)
+		alpha[a] = mi->a0[a] - mi->da[a];
+	return DEM_HEX8_OK;
 }
 
 /* Static condensation of the incompatible modes (hex8.h). */
 int dem_hex8_condense(int eas, double *Kf, int nd, double *r, double fint[24],
 		      double K[576])
 {
+	if (!K) {       /* the modes' residual is converged: r_u is fint */
+		for (int I = 0; I < 8; I++)
+			for (int i = 0; i < 3; i++)
+				fint[8 * i + I] = r[3 * I + i];
+		return DEM_HEX8_OK;
+	}
 	if (eas) {
 		/* static condensation: K = Kuu - Kua Kaa^-1 Kau,
 		 * f = r_u - Kua Kaa^-1 r_a */

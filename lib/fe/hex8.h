@@ -228,6 +228,35 @@ int dem_hex8_static(const dem_mat_t *m, dem_hex8_rule_t rule, const double X[24]
 int dem_hex8_condense(int eas, double *Kf, int nd, double *r, double fint[24],
 		      double K[576]);
 
+/* For the implicit elements built on this one (dem_hex8_static and
+ * dem_hex8_large): the reference gradients at Gauss point p of g, b[0..7]
+ * those of the 8 shape functions (J^-T grad_xi N_I) and, with eas, b[8..10]
+ * those of the incompatible modes 1 - xi_m^2, mapped with the centre
+ * Jacobian's inverse J0i and scaled by j0 / det J (its determinant over
+ * the point's): the patch test holds. */
+void dem_hex8_grads(const dem_hex8_full_t *g, int p, int eas, double j0,
+		    const double J0i[9], double b[][3]);
+
+/* The local iteration on the mode amplitudes alpha that makes their
+ * residual r_a vanish, with backtracking (a plastic Gauss point switching
+ * between loading and unloading can make the plain iteration cycle): per
+ * iteration it (from 0, at most DEM_HEX8_MODES_MAXIT), after r_a,
+ * dem_hex8_modes_check says DONE (converged: |r_a| negligible against the
+ * element's stress resultant ref, in N, of an element of volume vol and
+ * modulus E), HALVED (the step did not reduce |r_a|: alpha set back along
+ * it, evaluate again) or NEWTON: the caller assembles K_aa and
+ * dem_hex8_modes_newton solves K_aa dalpha = -r_a and sets alpha
+ * (DEM_HEX8_NOCONV when K_aa is singular).  mi starts as { .step = 1 }. */
+#define DEM_HEX8_MODES_MAXIT 60
+enum { DEM_HEX8_MODES_DONE, DEM_HEX8_MODES_HALVED, DEM_HEX8_MODES_NEWTON };
+typedef struct dem_hex8_modes {
+	double rn, rprev, step, a0[9], da[9];
+} dem_hex8_modes_t;
+int dem_hex8_modes_check(dem_hex8_modes_t *mi, int it, const double ra[9],
+			 double ref, double vol, double E, double alpha[9]);
+int dem_hex8_modes_newton(dem_hex8_modes_t *mi, double Kaa[81], const double ra[9],
+			  double alpha[9]);
+
 /* ---- Helpers ------------------------------------------------------------ */
 
 /* Coordinates of the 8 Gauss points (component-major, as x), for mapping

@@ -17,7 +17,6 @@
 #include "fe/dense.h"
 
 #define NPN 11                          /* pseudo-nodes */
-#define GAUSS 0.57735026918962576451    /* 1/sqrt(3) */
 
 /* Inverse of the 3x3 matrix with columns u, v, w: rows (v x w, w x u,
  * u x v) / det, so Ji[3 m + j] = d xi_m / d x_j.  Returns det. */
@@ -148,29 +147,11 @@ int dem_hex8_large(const dem_mat_t *m, int eas, const double X[24],
 	if (eas)
 		j0 = invert(geo.a[1], geo.a[2], geo.a[3], J0i);
 
-	/* reference gradients of the pseudo-nodes at the Gauss points */
+	/* reference gradients of the pseudo-nodes at the Gauss points, the
+	 * modes as DEM_HEX8_EAS's */
 	double g[8][NPN][3];
-	for (int p = 0; p < 8; p++) {
-		double gx[3] = { GAUSS * dem_hex8_node_xi[p], GAUSS * dem_hex8_node_eta[p],
-				 GAUSS * dem_hex8_node_zeta[p] };
-		const double *Ji = geo.Jinv[p];
-		for (int I = 0; I < 8; I++) {
-			double xI = dem_hex8_node_xi[I], eI = dem_hex8_node_eta[I], zI = dem_hex8_node_zeta[I];
-			double n0 = 0.125 * xI * (1 + gx[1] * eI) * (1 + gx[2] * zI);
-			double n1 = 0.125 * eI * (1 + gx[0] * xI) * (1 + gx[2] * zI);
-			double n2 = 0.125 * zI * (1 + gx[0] * xI) * (1 + gx[1] * eI);
-			for (int j = 0; j < 3; j++)
-				g[p][I][j] = Ji[j] * n0 + Ji[3 + j] * n1 + Ji[6 + j] * n2;
-		}
-		if (eas) {
-			/* mode 1 - xi_m^2, mapped by the centre Jacobian and scaled
-			 * by j0 / j (patch test), as DEM_HEX8_EAS */
-			double s = j0 / geo.wdet[p];
-			for (int mm = 0; mm < 3; mm++)
-				for (int j = 0; j < 3; j++)
-					g[p][8 + mm][j] = -2 * gx[mm] * s * J0i[3 * mm + j];
-		}
-	}
+	for (int p = 0; p < 8; p++)
+		dem_hex8_grads(&geo, p, eas, j0, J0i, g[p]);
 
 	/* generalised displacements: nodal (pseudo-node-major) then modes */
 	double qn[3 * NPN], q[3 * NPN];
@@ -194,8 +175,9 @@ int dem_hex8_large(const dem_mat_t *m, int eas, const double X[24],
 	/* local Newton iteration on the modes with backtracking, as in
 	 * dem_hex8_static() */
 	double Dg[8][36], Fg[8][9], B[8][NPN][6][3], r[3 * NPN];
-	double wpl = 0, rprev = 0, step = 1, a0[9] = { 0 }, da[9] = { 0 };
-	int it, maxit = eas ? 60 : 1;
+	double wpl = 0;
+	dem_hex8_modes_t mi = { .step = 1 };
+	int it, maxit = eas ? DEM_HEX8_MODES_MAXIT : 1;
 	for (it = 0; it < maxit; it++) {
 		if (eas)
 			memcpy(q + 24, h->alpha, 9 * sizeof *q);
@@ -234,48 +216,28 @@ int dem_hex8_large(const dem_mat_t *m, int eas, const double X[24],
 		}
 		if (!eas)
 			break;
-		double h3 = cbrt(geo.vol);
-		double tol = 1e-11 * ref / h3 + 1e-15 * m->E * h3 * h3;
-		double rmax = 0, rn = 0;
-		for (int a = 0; a < 9; a++) {
-			rmax = fmax(rmax, fabs(r[24 + a]));
-			rn += r[24 + a] * r[24 + a];
-		}
-		rn = sqrt(rn);
-		if (rmax <= tol)
+		int next = dem_hex8_modes_check(&mi, it, r + 24, ref, geo.vol, m->E, h->alpha);
+		if (next == DEM_HEX8_MODES_DONE)
 			break;
-		if (it > 0 && rn > (1 - 1e-4 * step) * rprev && step > 1.0 / 64) {
-			step *= 0.5;
-			for (int a = 0; a < 9; a++)
-				h->alpha[a] = a0[a] - step * da[a];
+		if (next == DEM_HEX8_MODES_HALVED)
 			continue;
-		}
 		double Kaa[81] = { 0 };
 		for (int p = 0; p < 8; p++)
 			add_k(3, &B[p][8], (const double (*)[3])&g[p][8], Dg[p], h->sig + 6 * p,
 			      geo.wdet[p], Kaa, 9, 0, 0);
-		memcpy(da, r + 24, sizeof da);
-		if (dem_dense_solve(9, Kaa, 1, da))
+		if (dem_hex8_modes_newton(&mi, Kaa, r + 24, h->alpha))
 			return DEM_HEX8_NOCONV;
-		memcpy(a0, h->alpha, sizeof a0);
-		rprev = rn;
-		step = 1;
-		for (int a = 0; a < 9; a++)
-			h->alpha[a] = a0[a] - da[a];
 	}
 	if (eas && it == maxit)
 		return DEM_HEX8_NOCONV;
 	if (wp)
 		*wp = wpl;
-	if (!K) {
-		for (int I = 0; I < 8; I++)
-			for (int i = 0; i < 3; i++)
-				fint[8 * i + I] = r[3 * I + i];
-		return DEM_HEX8_OK;
-	}
 	double Kf[3 * NPN * 3 * NPN];
-	memset(Kf, 0, sizeof Kf);
-	for (int p = 0; p < 8; p++)
-		add_k(nb, B[p], (const double (*)[3])g[p], Dg[p], h->sig + 6 * p, geo.wdet[p], Kf, nd, 0, 8);
+	if (K) {
+		memset(Kf, 0, sizeof Kf);
+		for (int p = 0; p < 8; p++)
+			add_k(nb, B[p], (const double (*)[3])g[p], Dg[p], h->sig + 6 * p,
+			      geo.wdet[p], Kf, nd, 0, 8);
+	}
 	return dem_hex8_condense(eas, Kf, nd, r, fint, K);
 }
