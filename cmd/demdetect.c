@@ -12,8 +12,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include <gsl/gsl_errno.h>
-
 #include "core/cli.h"
 #include "core/cost.h"
 #include "detect/detect.h"
@@ -66,15 +64,14 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 {
 	dem_cli_t c;
 	dem_common_t *m = &cl->com;
-	int k, done;
+	int k;
 
 	memset(cl, 0, sizeof *cl);
 	cl->repeat = 1;
 	if (dem_common_init(m, argc) || dem_cli_init(&c, PROG, options, usage, purpose, epilogue))
 		return DEM_EIO;
-	while ((k = dem_cli_next(&c, argc, argv)) != -1) {
-		if (dem_cli_common(&c, k, optarg, m))
-			continue;       /* --seed and --accuracy: no use in detection */
+	/* (of the common options, --seed and --accuracy have no use in detection) */
+	while ((k = dem_cli_option(&c, m, argc, argv)) != -1) {
 		switch (k) {
 		case 'c': cl->count = 1; break;
 		case OPT_REPEAT:
@@ -96,19 +93,12 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 		default: break;
 		}
 	}
-	done = c.done;
-	if (done < 0) {
-		if (optind < argc)
-			cl->input = argv[optind++];
-		if (optind < argc)
-			dem_cli_error(&c, "unexpected argument '%s' (one input at most)", argv[optind]);
+	if (c.done < 0) {
+		cl->input = dem_cli_operand(&c, argc, argv, "input");
 		if (cl->count && (m->output || m->binary || m->gzip))
 			dem_cli_error(&c, "-c prints a number: -o, -b and -z do not apply");
-		if (dem_cli_finish(&c))
-			done = DEM_EUSAGE;
 	}
-	dem_cli_free(&c);
-	return done;
+	return dem_cli_done(&c);
 }
 
 struct settings {
@@ -389,108 +379,127 @@ static int time_repeats(const dem_boxes_t *b, const dem_detect_opts_t *o,
 	return rc;
 }
 
+/* A run: the settings, the objects read and the pairs found. */
+struct job {
+	struct settings set;
+	struct objects ob;
+	dem_reader_t *rd;
+	dem_pairs_t pairs;
+	dem_detect_stats_t stats;
+	size_t box_pairs;       /* before --shape */
+};
+
+/* The scene's settings with the options' overrides; --dump-scene prints
+ * them. */
+static int get_settings(const struct cmdline *cl, struct settings *set, dem_error_t *e)
+{
+	dem_scene_t *scene = NULL;
+	int rc = dem_scene_open(&scene, &cl->com, e);
+
+	if (!rc)
+		rc = read_scene(scene, set, e);
+	if (!rc && cl->com.dump)
+		dem_scene_dump(scene, stdout);
+	dem_scene_free(scene);
+	return rc;
+}
+
+static int read_input(const struct cmdline *cl, struct job *j, dem_cost_t *cost, dem_error_t *e)
+{
+	double t = dem_wall();
+	int rc;
+
+	if ((rc = dem_reader_open(&j->rd, cl->input, e)) ||
+	    (rc = read_objects(j->rd, j->set.buffer, j->set.shape, &j->ob, e)))
+		return rc;
+	if (j->set.shape && !j->ob.particles)
+		return dem_error_set(e, DEM_EINPUT, "%s: --shape needs disks or spheres, not boxes",
+				     dem_reader_name(j->rd));
+	if (j->set.periodic &&
+	    (rc = read_period(j->rd, j->set.periodic, j->ob.dim, &j->set.opts, e)))
+		return rc;
+	dem_cost_time(cost, "read", dem_wall() - t);
+	return DEM_OK;
+}
+
+/* Detection (timed again with --repeat), then --shape's filter. */
+static int find_pairs(const struct cmdline *cl, struct job *j, dem_cost_t *cost, dem_error_t *e)
+{
+	int rc;
+
+	if (cl->repeat > 1 && !(j->set.opts.ws = dem_detect_ws_new()))
+		return dem_error_nomem(e, "detection workspace");
+	double t = dem_wall();
+	if ((rc = dem_detect(&j->ob.b, &j->set.opts, &j->pairs, &j->stats, e)))
+		return rc;
+	dem_cost_time(cost, "detect", dem_wall() - t);
+	if (cl->repeat > 1 &&
+	    (rc = time_repeats(&j->ob.b, &j->set.opts, cl->repeat - 1, &j->pairs, cost, e)))
+		return rc;
+	j->box_pairs = j->pairs.n;
+	if (j->set.shape) {
+		t = dem_wall();
+		shape_filter(&j->ob, &j->set.opts, j->set.shape_tol, &j->pairs);
+		dem_cost_time(cost, "shape", dem_wall() - t);
+	}
+	return DEM_OK;
+}
+
+/* The count (-c), or the pair stream in (i, j) order. */
+static int put_pairs(const struct cmdline *cl, struct job *j, dem_main_t *r)
+{
+	int rc;
+
+	if (cl->count) {
+		printf("%zu\n", j->pairs.n);
+		return DEM_OK;
+	}
+	double t = dem_wall();
+	if (dem_pairs_sort(&j->pairs))
+		return dem_error_nomem(&r->e, "sorting pairs");
+	dem_cost_time(&r->cost, "sort", dem_wall() - t);
+	t = dem_wall();
+	if ((rc = write_pairs(cl, j->rd, r->argc, r->args, j->ob.n, &j->pairs, &r->e)))
+		return rc;
+	dem_cost_time(&r->cost, "write", dem_wall() - t);
+	return DEM_OK;
+}
+
+static void report(const struct cmdline *cl, const struct job *j, dem_cost_t *cost)
+{
+	dem_cost_count(cost, "objects", (double)j->ob.n);
+	dem_cost_count(cost, "pairs", (double)j->pairs.n);
+	if (j->set.shape)
+		dem_cost_count(cost, "box_pairs", (double)j->box_pairs);
+	dem_cost_count(cost, "checks", (double)j->stats.checks);
+	if (j->stats.ghosts)
+		dem_cost_count(cost, "images", (double)j->stats.ghosts);
+	if (cl->com.verbose)
+		fprintf(stderr, "%s: %s, %zu objects, cell %g x %g x %g\n", PROG,
+			dem_detect_algo_name(j->set.opts.algo), j->ob.n, j->stats.cell[0],
+			j->stats.cell[1], j->stats.cell[2]);
+}
+
 int main(int argc, char **argv)
 {
 	struct cmdline cl;
-	struct settings set = {0};
-	struct objects ob = {0};
-	dem_error_t e = {0};
-	dem_scene_t *scene = NULL;
-	dem_reader_t *rd = NULL;
-	dem_pairs_t pairs;
-	dem_detect_stats_t stats = {0};
-	dem_cost_t cost;
+	struct job j = {0};
+	dem_main_t r;
 	int rc;
 
-	dem_cost_start(&cost);
-	gsl_set_error_handler_off();
-	dem_pairs_init(&pairs);
-	char **args = malloc(((size_t)argc + 1) * sizeof *args);
-	if (!args)
-		return DEM_EIO;
-	memcpy(args, argv, ((size_t)argc + 1) * sizeof *args);
-	if ((rc = parse_cmdline(argc, argv, &cl)) >= 0) {
-		free(args);
-		dem_common_free(&cl.com);
+	if ((rc = dem_main_start(&r, PROG, argc, argv)))
 		return rc;
-	}
-	if ((rc = dem_scene_load(&scene, cl.com.scene, &e)))
-		goto out;
-	if ((rc = dem_scene_override_all(scene, cl.com.ov, cl.com.nov, &e)))
-		goto out;
-	if ((rc = read_scene(scene, &set, &e)))
-		goto out;
-	if (cl.com.dump) {
-		dem_scene_dump(scene, stdout);
-		goto done;
-	}
-
-	double t = dem_wall();
-	if ((rc = dem_reader_open(&rd, cl.input, &e)) ||
-	    (rc = read_objects(rd, set.buffer, set.shape, &ob, &e)))
-		goto out;
-	if (set.shape && !ob.particles) {
-		rc = dem_error_set(&e, DEM_EINPUT, "%s: --shape needs disks or spheres, not boxes",
-				   dem_reader_name(rd));
-		goto out;
-	}
-	if (set.periodic && (rc = read_period(rd, set.periodic, ob.dim, &set.opts, &e)))
-		goto out;
-	dem_cost_time(&cost, "read", dem_wall() - t);
-
-	if (cl.repeat > 1 && !(set.opts.ws = dem_detect_ws_new())) {
-		rc = dem_error_nomem(&e, "detection workspace");
-		goto out;
-	}
-	t = dem_wall();
-	if ((rc = dem_detect(&ob.b, &set.opts, &pairs, &stats, &e)))
-		goto out;
-	dem_cost_time(&cost, "detect", dem_wall() - t);
-	if (cl.repeat > 1 && (rc = time_repeats(&ob.b, &set.opts, cl.repeat - 1, &pairs, &cost, &e)))
-		goto out;
-	size_t boxpairs = pairs.n;
-	if (set.shape) {
-		t = dem_wall();
-		shape_filter(&ob, &set.opts, set.shape_tol, &pairs);
-		dem_cost_time(&cost, "shape", dem_wall() - t);
-	}
-
-	if (cl.count) {
-		printf("%zu\n", pairs.n);
-	} else {
-		t = dem_wall();
-		if (dem_pairs_sort(&pairs)) {
-			rc = dem_error_nomem(&e, "sorting pairs");
-			goto out;
-		}
-		dem_cost_time(&cost, "sort", dem_wall() - t);
-		t = dem_wall();
-		if ((rc = write_pairs(&cl, rd, argc, args, ob.n, &pairs, &e)))
-			goto out;
-		dem_cost_time(&cost, "write", dem_wall() - t);
-	}
-	dem_cost_count(&cost, "objects", (double)ob.n);
-	dem_cost_count(&cost, "pairs", (double)pairs.n);
-	if (set.shape)
-		dem_cost_count(&cost, "box_pairs", (double)boxpairs);
-	dem_cost_count(&cost, "checks", (double)stats.checks);
-	if (stats.ghosts)
-		dem_cost_count(&cost, "images", (double)stats.ghosts);
-	if (cl.com.verbose)
-		fprintf(stderr, "%s: %s, %zu objects, cell %g x %g x %g\n", PROG,
-			dem_detect_algo_name(set.opts.algo), ob.n, stats.cell[0],
-			stats.cell[1], stats.cell[2]);
-done:
-	rc = 0;
-out:
-	if (rc)
-		dem_cli_fail(PROG, rc, &e);
-	dem_detect_ws_free(set.opts.ws);
-	dem_pairs_free(&pairs);
-	objects_free(&ob);
-	dem_reader_close(rd);
-	dem_scene_free(scene);
-	free(args);
-	dem_common_free(&cl.com);
-	return rc ? rc : dem_cli_end(PROG, &cl.com, &cost);
+	if ((rc = parse_cmdline(argc, argv, &cl)) >= 0)
+		return dem_main_quit(&r, &cl.com, rc);
+	dem_pairs_init(&j.pairs);
+	if (!(rc = get_settings(&cl, &j.set, &r.e)) && !cl.com.dump &&
+	    !(rc = read_input(&cl, &j, &r.cost, &r.e)) &&
+	    !(rc = find_pairs(&cl, &j, &r.cost, &r.e)) &&
+	    !(rc = put_pairs(&cl, &j, &r)))
+		report(&cl, &j, &r.cost);
+	dem_detect_ws_free(j.set.opts.ws);
+	dem_pairs_free(&j.pairs);
+	objects_free(&j.ob);
+	dem_reader_close(j.rd);
+	return dem_main_end(&r, &cl.com, rc);
 }

@@ -19,8 +19,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include <gsl/gsl_errno.h>
-
 #include "core/afile.h"
 #include "core/cli.h"
 #include "core/cost.h"
@@ -66,7 +64,7 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 {
 	dem_cli_t c;
 	dem_common_t *m = &cl->com;
-	int k, done;
+	int k;
 
 	memset(cl, 0, sizeof *cl);
 	cl->forms = 3;
@@ -75,9 +73,7 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 	cl->strip = 'A';
 	if (dem_common_init(m, argc) || dem_cli_init(&c, PROG, options, usage, purpose, epilogue))
 		return DEM_EIO;
-	while ((k = dem_cli_next(&c, argc, argv)) != -1) {
-		if (dem_cli_common(&c, k, optarg, m))
-			continue;
+	while ((k = dem_cli_option(&c, m, argc, argv)) != -1) {
 		switch (k) {
 		case OPT_FORM:
 			if (strcmp(optarg, "exp2") == 0)
@@ -118,21 +114,14 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 		default: break;
 		}
 	}
-	done = c.done;
-	if (done < 0) {
-		if (optind < argc)
-			cl->input = argv[optind++];
-		if (optind < argc)
-			dem_cli_error(&c, "unexpected argument '%s' (one input at most)", argv[optind]);
+	if (c.done < 0) {
+		cl->input = dem_cli_operand(&c, argc, argv, "input");
 		if (m->binary || m->gzip)
 			dem_cli_error(&c, "the summary is text: -b and -z do not apply");
 		if (m->scene || m->dump)
 			dem_cli_error(&c, "demfit reads no scene: -s and --dump-scene do not apply");
-		if (dem_cli_finish(&c))
-			done = DEM_EUSAGE;
 	}
-	dem_cli_free(&c);
-	return done;
+	return dem_cli_done(&c);
 }
 
 /* The points of the table: exposures t, heights h in m. */
@@ -213,95 +202,104 @@ static void put_fit(FILE *o, const char *k, const dem_sat_fit_t *f, double tmax,
 		f->H / INCH, strip, k, 2 * f->T > tmax * (1 + 1e-12));
 }
 
-int main(int argc, char **argv)
+/* The fits of the forms asked for, and the J443 rule on the points. */
+struct fits {
+	dem_sat_fit_t fit[2];
+	int ok[2];              /* the form's fit converged */
+	int found;              /* the points saturate */
+	double T, H, ratio;
+};
+
+/* A form whose fit fails to converge is reported as such when the other
+ * converged; bad points fail both alike. */
+static int fit_curve(const struct cmdline *cl, size_t n, const double *t, const double *h,
+		     struct fits *f, dem_error_t *e)
 {
-	struct cmdline cl;
-	dem_error_t e = {0};
-	dem_cost_t cost;
+	const char *name = cl->input ? cl->input : "stdin";
+	dem_error_t fe[2] = {{0}, {0}};
+	int nok = 0;
+
+	memset(f, 0, sizeof *f);
+	for (int k = 0; k < 2; k++) {
+		if (!(cl->forms >> k & 1))
+			continue;
+		int frc = dem_sat_fit(n, t, h, (dem_sat_form_t)k, &f->fit[k], &fe[k]);
+		if (frc && frc != DEM_ENUMERIC)
+			return dem_error_set(e, frc, "%s: %s", name, fe[k].msg);
+		f->ok[k] = !frc;
+		nok += f->ok[k];
+	}
+	if (!nok)
+		return dem_error_set(e, DEM_ENUMERIC, "%s: %s", name, fe[cl->forms & 1 ? 0 : 1].msg);
+	for (int k = 0; k < 2; k++)
+		if ((cl->forms >> k & 1) && !f->ok[k] && !cl->com.quiet)
+			fprintf(stderr, "%s: %s: %s\n", PROG, name, fe[k].msg);
+	f->found = dem_sat_points(n, t, h, &f->T, &f->H, &f->ratio);
+	return DEM_OK;
+}
+
+/* The summary, on standard output or atomically to -o FILE. */
+static int write_summary(const struct cmdline *cl, size_t n, double tmax, const struct fits *f,
+			 dem_error_t *e)
+{
 	dem_afile_t out = {0};
-	double *t = NULL, *h = NULL;
-	size_t n = 0;
+	FILE *o = stdout;
 	int rc;
 
-	dem_cost_start(&cost);
-	gsl_set_error_handler_off();
-	if ((rc = parse_cmdline(argc, argv, &cl)) >= 0) {
-		dem_common_free(&cl.com);
-		return rc;
-	}
-	double w = dem_wall();
-	if ((rc = read_points(&cl, &t, &h, &n, &e)))
-		goto out;
-	dem_cost_time(&cost, "read", dem_wall() - w);
-	w = dem_wall();
-	/* A form whose fit fails to converge is reported as such when the
-	 * other converged; bad points fail both alike. */
-	dem_sat_fit_t fit[2];
-	dem_error_t fe[2] = {{0}, {0}};
-	int ok[2] = {0, 0}, nok = 0;
-	for (int k = 0; k < 2; k++) {
-		if (!(cl.forms >> k & 1))
-			continue;
-		int frc = dem_sat_fit(n, t, h, (dem_sat_form_t)k, &fit[k], &fe[k]);
-		if (frc && frc != DEM_ENUMERIC) {
-			rc = dem_error_set(&e, frc, "%s: %s", cl.input ? cl.input : "stdin", fe[k].msg);
-			goto out;
-		}
-		ok[k] = !frc;
-		nok += ok[k];
-	}
-	if (!nok) {
-		int k = cl.forms & 1 ? 0 : 1;
-		rc = dem_error_set(&e, DEM_ENUMERIC, "%s: %s", cl.input ? cl.input : "stdin", fe[k].msg);
-		goto out;
-	}
-	for (int k = 0; k < 2; k++)
-		if ((cl.forms >> k & 1) && !ok[k] && !cl.com.quiet)
-			fprintf(stderr, "%s: %s: %s\n", PROG, cl.input ? cl.input : "stdin", fe[k].msg);
-	double T = 0, H = 0, ratio = 0;
-	int found = dem_sat_points(n, t, h, &T, &H, &ratio);
-	dem_cost_time(&cost, "fit", dem_wall() - w);
-
-	FILE *o = stdout;
-	if (cl.com.output) {
-		if ((rc = dem_afile_open(&out, cl.com.output, "w", &e)))
-			goto out;
+	if (cl->com.output) {
+		if ((rc = dem_afile_open(&out, cl->com.output, "w", e)))
+			return rc;
 		o = out.f;
 	}
 	fprintf(o, "# demfit %s: saturation curve, H(t) = a (1 - exp(-b t^c)); heights in m "
 		"(_in: inches), exposures in the input's unit\n", DEM_VERSION);
-	fprintf(o, "points: %zu\nstrip: %c\n", n, cl.strip);
+	fprintf(o, "points: %zu\nstrip: %c\n", n, cl->strip);
 	for (int k = 0; k < 2; k++) {
-		if (!(cl.forms >> k & 1))
+		if (!(cl->forms >> k & 1))
 			continue;
-		fprintf(o, "%s_converged: %d\n", dem_sat_form_names[k], ok[k]);
-		if (ok[k])
-			put_fit(o, dem_sat_form_names[k], &fit[k], t[n - 1], cl.strip);
+		fprintf(o, "%s_converged: %d\n", dem_sat_form_names[k], f->ok[k]);
+		if (f->ok[k])
+			put_fit(o, dem_sat_form_names[k], &f->fit[k], tmax, cl->strip);
 	}
-	fprintf(o, "points_saturates: %d\n", found);
-	if (found)
+	fprintf(o, "points_saturates: %d\n", f->found);
+	if (f->found)
 		fprintf(o, "points_T: %.9g\npoints_H: %.9g\npoints_H_mm: %.6g\npoints_H_in: %.6g\n"
-			"points_intensity: %.4f%c\npoints_ratio: %.6g\n", T, H, H * 1e3, H / INCH,
-			H / INCH, cl.strip, ratio);
-	if (out.f && (rc = dem_afile_commit(&out, 0, &e)))
-		goto out;
-	dem_cost_count(&cost, "points", (double)n);
-	for (int k = 0; k < 2; k++)
-		if (ok[k])
-			dem_cost_count(&cost, k ? "iterations_exp3" : "iterations_exp2",
-				       fit[k].iterations);
-out:
-	if (rc) {
-		dem_afile_abort(&out);
-		dem_cli_fail(PROG, rc, &e);
+			"points_intensity: %.4f%c\npoints_ratio: %.6g\n", f->T, f->H, f->H * 1e3,
+			f->H / INCH, f->H / INCH, cl->strip, f->ratio);
+	return out.f ? dem_afile_commit(&out, 0, e) : DEM_OK;
+}
+
+int main(int argc, char **argv)
+{
+	struct cmdline cl;
+	struct fits f;
+	dem_main_t r;
+	double *t = NULL, *h = NULL, w;
+	size_t n = 0;
+	int rc;
+
+	if ((rc = dem_main_start(&r, PROG, argc, argv)))
+		return rc;
+	if ((rc = parse_cmdline(argc, argv, &cl)) >= 0)
+		return dem_main_quit(&r, &cl.com, rc);
+	w = dem_wall();
+	if (!(rc = read_points(&cl, &t, &h, &n, &r.e))) {
+		dem_cost_time(&r.cost, "read", dem_wall() - w);
+		w = dem_wall();
+		rc = fit_curve(&cl, n, t, h, &f, &r.e);
+	}
+	if (!rc) {
+		dem_cost_time(&r.cost, "fit", dem_wall() - w);
+		rc = write_summary(&cl, n, t[n - 1], &f, &r.e);
+	}
+	if (!rc) {
+		dem_cost_count(&r.cost, "points", (double)n);
+		for (int k = 0; k < 2; k++)
+			if (f.ok[k])
+				dem_cost_count(&r.cost, k ? "iterations_exp3" : "iterations_exp2",
+					       f.fit[k].iterations);
 	}
 	free(t);
 	free(h);
-	if (rc) {
-		dem_common_free(&cl.com);
-		return rc;
-	}
-	rc = dem_cli_end(PROG, &cl.com, &cost);
-	dem_common_free(&cl.com);
-	return rc;
+	return dem_main_end(&r, &cl.com, rc);
 }

@@ -14,13 +14,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
-
-#include <gsl/gsl_errno.h>
 
 #ifdef _OPENMP
 #include <omp.h>
 #endif
+#include "core/afile.h"
 #include "core/cli.h"
 #include "core/cost.h"
 #include "fe/fescene.h"
@@ -70,14 +68,12 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 {
 	dem_cli_t c;
 	dem_common_t *m = &cl->com;
-	int k, done;
+	int k;
 
 	memset(cl, 0, sizeof *cl);
 	if (dem_common_init(m, argc) || dem_cli_init(&c, PROG, options, usage, purpose, epilogue))
 		return DEM_EIO;
-	while ((k = dem_cli_next(&c, argc, argv)) != -1) {
-		if (dem_cli_common(&c, k, optarg, m))
-			continue;
+	while ((k = dem_cli_option(&c, m, argc, argv)) != -1) {
 		switch (k) {
 		case OPT_LARGE: dem_common_override(m, "form.strain", "large", "--large"); break;
 		case OPT_INCREMENTS: dem_common_override(m, "form.increments", optarg, "--increments"); break;
@@ -89,19 +85,12 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 		default: break;
 		}
 	}
-	done = c.done;
-	if (done < 0) {
-		if (optind < argc)
-			cl->input = argv[optind++];
-		if (optind < argc)
-			dem_cli_error(&c, "unexpected argument '%s' (one input at most)", argv[optind]);
+	if (c.done < 0) {
+		cl->input = dem_cli_operand(&c, argc, argv, "input");
 		if (m->binary || m->gzip)
 			dem_cli_error(&c, "the summary is text: -b and -z do not apply");
-		if (dem_cli_finish(&c))
-			done = DEM_EUSAGE;
 	}
-	dem_cli_free(&c);
-	return done;
+	return dem_cli_done(&c);
 }
 
 /* One profile of a step: where it goes and where it comes from. */
@@ -317,26 +306,17 @@ static void newton_log(void *ctx, int step, int inc, double lambda, int iter, do
  * standard output when path is NULL. */
 static int write_text(const char *path, const char *text, size_t len, dem_error_t *e)
 {
+	dem_afile_t a;
+	int rc;
+
 	if (!path) {
 		fwrite(text, 1, len, stdout);
 		return DEM_OK;
 	}
-	size_t n = strlen(path) + 16;
-	char *tmp = malloc(n);
-	if (!tmp)
-		return dem_error_nomem(e, path);
-	snprintf(tmp, n, "%s.tmp%ld", path, (long)getpid());
-	FILE *f = fopen(tmp, "w");
-	int bad = !f || fwrite(text, 1, len, f) != len;
-	if (f && fclose(f))
-		bad = 1;
-	if (bad || rename(tmp, path)) {
-		remove(tmp);
-		free(tmp);
-		return dem_error_set(e, DEM_EIO, "%s: cannot write", path);
-	}
-	free(tmp);
-	return DEM_OK;
+	if ((rc = dem_afile_open(&a, path, "w", e)))
+		return rc;
+	fwrite(text, 1, len, a.f);
+	return dem_afile_commit(&a, 0, e);
 }
 
 /* The plate for ParaView: displacements and the element means of the
@@ -394,145 +374,193 @@ out:
 	return rc;
 }
 
-int main(int argc, char **argv)
-{
-	struct cmdline cl;
+/* A run: the scene (the settings name its files), the strip, its
+ * forming and the summary it writes. */
+struct job {
+	dem_scene_t *scene;
 	struct settings set;
-	dem_error_t e = {0};
-	dem_scene_t *scene = NULL;
-	dem_mesh_t mesh = {0};
-	dem_mat_t mat = {0};
-	dem_form_t *form = NULL;
-	struct inputs ip = {0};
-	dem_form_stats_t st = {0};
-	dem_cost_t cost;
-	char *sbuf = NULL;
-	size_t slen = 0;
-	FILE *sum = NULL;
+	dem_mat_t mat;
+	dem_mesh_t mesh;
+	dem_form_t *form;
+	struct inputs ip;
+	dem_form_stats_t st;
+	char *sbuf;             /* the summary */
+	size_t slen;
+};
+
+static void job_free(struct job *j)
+{
+	free(j->sbuf);
+	for (int k = 0; k < j->ip.nin; k++)
+		dem_profile_free(&j->ip.in[k]);
+	free(j->ip.in);
+	dem_form_free(j->form);
+	dem_mesh_free(&j->mesh);
+	dem_mat_free(&j->mat);
+	dem_scene_free(j->scene);
+}
+
+/* The scene's material and settings with the options' overrides;
+ * --dump-scene prints them. */
+static int get_settings(const struct cmdline *cl, struct job *j, dem_error_t *e)
+{
 	int rc;
 
-	dem_cost_start(&cost);
-	gsl_set_error_handler_off();
-	if ((rc = parse_cmdline(argc, argv, &cl)) >= 0) {
-		dem_common_free(&cl.com);
+	if ((rc = dem_scene_open(&j->scene, &cl->com, e)) ||
+	    (rc = dem_scene_material(j->scene, 0, &j->mat, e)) ||
+	    (rc = read_scene(j->scene, cl->com.accuracy, &j->set, e)))
 		return rc;
-	}
-	int blas = dem_form_threads((int)cl.threads);
-	if ((rc = dem_scene_load(&scene, cl.com.scene, &e)) ||
-	    (rc = dem_scene_override_all(scene, cl.com.ov, cl.com.nov, &e)) ||
-	    (rc = dem_scene_material(scene, 0, &mat, &e)) ||
-	    (rc = read_scene(scene, cl.com.accuracy, &set, &e)))
-		goto out;
-	if (cl.com.dump) {
-		dem_scene_dump(scene, stdout);
-		goto done;
-	}
+	if (cl->com.dump)
+		dem_scene_dump(j->scene, stdout);
+	return DEM_OK;
+}
+
+/* The strip's mesh and its implicit model. */
+static int build(const struct cmdline *cl, struct job *j, dem_cost_t *cost, dem_error_t *e)
+{
 	double t = dem_wall();
-	if (mat.flags & DEM_MAT_KIN) {
+	int rc;
+
+	if (j->mat.flags & DEM_MAT_KIN) {
 		/* the profile carries no back-stresses: the strip's material
 		 * is the law's monotonic curve (demform(1)) */
-		dem_mat_kin_as_iso(&mat);
-		if (!cl.com.quiet)
+		dem_mat_kin_as_iso(&j->mat);
+		if (!cl->com.quiet)
 			fprintf(stderr, "demform: kinematic hardening read as its monotonic "
 				"curve (the profile has no back-stresses)\n");
 	}
-	if ((rc = dem_plate_mesh(&set.plate, &mesh, &e)) ||
-	    (rc = dem_form_create(&form, &mesh, &mat, &e)))
-		goto out;
-	dem_cost_time(&cost, "mesh", dem_wall() - t);
-	if (!(sum = open_memstream(&sbuf, &slen))) {
-		rc = dem_error_nomem(&e, "summary");
-		goto out;
+	if ((rc = dem_plate_mesh(&j->set.plate, &j->mesh, e)) ||
+	    (rc = dem_form_create(&j->form, &j->mesh, &j->mat, e)))
+		return rc;
+	dem_cost_time(cost, "mesh", dem_wall() - t);
+	return DEM_OK;
+}
+
+/* One step: its profiles applied, the equilibrium found, the shape
+ * measured into the summary. */
+static int form_step(const struct cmdline *cl, struct job *j, int k, FILE *sum,
+		     dem_cost_t *cost, dem_error_t *e)
+{
+	const struct settings *set = &j->set;
+	const struct step *sp = &set->step[k];
+	double t = dem_wall();
+	int rc;
+
+	for (int a = 0; a < sp->napp; a++) {
+		dem_profile_t own = {0};
+		const dem_profile_t *p = NULL;
+		rc = get_profile(&j->ip, cl->input, &sp->app[a], &own, &p, e);
+		if (!rc)
+			rc = dem_form_profile(j->form, p, &sp->app[a].r,
+					      set->init ? DEM_FORM_STRAIN : DEM_FORM_SIGMA,
+					      sp->app[a].scale, e);
+		dem_profile_free(&own);
+		if (rc)
+			return rc;
 	}
-	struct logctx lc = {sum, cl.com.verbose && !cl.com.quiet};
-	set.opts.log = newton_log;
-	set.opts.ctx = &lc;
+	dem_cost_time(cost, "profile", dem_wall() - t);
+	dem_form_constrain(j->form, sp->bc, sp->minimal);
+	if ((rc = dem_form_step(j->form, &set->opts, &j->st, e)))
+		return rc;
+	dem_form_shape_t sh;
+	if ((rc = dem_form_shape(j->form, set->chord, set->chord_axis, set->fit[0], set->fit[1],
+				 &sh, e)))
+		return rc;
+	fprintf(sum, "step: %d\narc_height: %.9g\nchord: %.9g\n", k + 1, sh.arc, set->chord);
+	if (set->gauge_fits) {
+		double gh;
+		if ((rc = dem_form_gauge(j->form, set->gauge[0], set->gauge[1], &gh, e)))
+			return rc;
+		fprintf(sum, "gauge_height: %.9g\n", gh);
+	}
+	fprintf(sum, "max_deflection: %.9g\n"
+		"curvature_x: %.9g\ncurvature_y: %.9g\ncurvature_xy: %.9g\n"
+		"residual: %.6e\nresidual_rel: %.6e\nload: %.6e\n",
+		sh.wmax, sh.kx, sh.ky, sh.kxy, j->st.rnorm, j->st.rrel, j->st.fnorm);
+	if (!cl->com.quiet && cl->com.verbose)
+		fprintf(stderr, "%s: step %d: arc height %.6g m, curvatures %.6g %.6g 1/m\n",
+			PROG, k + 1, sh.arc, sh.kx, sh.ky);
+	return DEM_OK;
+}
+
+/* Every step, the summary kept in memory until all have converged. */
+static int form_steps(const struct cmdline *cl, struct job *j, dem_cost_t *cost, dem_error_t *e)
+{
+	struct settings *set = &j->set;
+	FILE *sum = open_memstream(&j->sbuf, &j->slen);
+	int rc = DEM_OK;
+
+	if (!sum)
+		return dem_error_nomem(e, "summary");
+	struct logctx lc = {sum, cl->com.verbose && !cl->com.quiet};
+	set->opts.log = newton_log;
+	set->opts.ctx = &lc;
 	fprintf(sum, "# demform %s summary; lengths in m, curvatures in 1/m, stresses in Pa\n",
 		DEM_VERSION);
 	fprintf(sum, "plate: %g %g %g\nelements: %zu\nnodes: %zu\nstrain: %s\nelement: %s\n",
-		set.plate.L, set.plate.W, set.plate.h, mesh.ne, mesh.nn,
-		set.opts.large ? "large" : "small",
-		set.opts.rule == DEM_HEX8_EAS ? "eas" : set.opts.rule == DEM_HEX8_BBAR ? "bbar" : "full");
-	if (set.gauge_fits)
-		fprintf(sum, "gauge: %.9g %.9g\n", set.gauge[0], set.gauge[1]);
+		set->plate.L, set->plate.W, set->plate.h, j->mesh.ne, j->mesh.nn,
+		set->opts.large ? "large" : "small",
+		set->opts.rule == DEM_HEX8_EAS ? "eas" : set->opts.rule == DEM_HEX8_BBAR ? "bbar" : "full");
+	if (set->gauge_fits)
+		fprintf(sum, "gauge: %.9g %.9g\n", set->gauge[0], set->gauge[1]);
 	fprintf(sum, "# newton: step increment lambda iteration |R|:N |R|/|F| |du|:m\n");
-
-	for (int k = 0; k < set.nstep; k++) {
-		struct step *sp = &set.step[k];
-		t = dem_wall();
-		for (int a = 0; a < sp->napp; a++) {
-			dem_profile_t own = {0};
-			const dem_profile_t *p = NULL;
-			rc = get_profile(&ip, cl.input, &sp->app[a], &own, &p, &e);
-			if (!rc)
-				rc = dem_form_profile(form, p, &sp->app[a].r,
-						      set.init ? DEM_FORM_STRAIN : DEM_FORM_SIGMA,
-						      sp->app[a].scale, &e);
-			dem_profile_free(&own);
-			if (rc)
-				goto out;
-		}
-		dem_cost_time(&cost, "profile", dem_wall() - t);
-		dem_form_constrain(form, sp->bc, sp->minimal);
-		if ((rc = dem_form_step(form, &set.opts, &st, &e)))
-			goto out;
-		dem_form_shape_t sh;
-		if ((rc = dem_form_shape(form, set.chord, set.chord_axis, set.fit[0], set.fit[1], &sh, &e)))
-			goto out;
-		fprintf(sum, "step: %d\narc_height: %.9g\nchord: %.9g\n", k + 1, sh.arc, set.chord);
-		if (set.gauge_fits) {
-			double gh;
-			if ((rc = dem_form_gauge(form, set.gauge[0], set.gauge[1], &gh, &e)))
-				goto out;
-			fprintf(sum, "gauge_height: %.9g\n", gh);
-		}
-		fprintf(sum, "max_deflection: %.9g\n"
-			"curvature_x: %.9g\ncurvature_y: %.9g\ncurvature_xy: %.9g\n"
-			"residual: %.6e\nresidual_rel: %.6e\nload: %.6e\n",
-			sh.wmax, sh.kx, sh.ky, sh.kxy, st.rnorm, st.rrel, st.fnorm);
-		if (!cl.com.quiet && cl.com.verbose)
-			fprintf(stderr, "%s: step %d: arc height %.6g m, curvatures %.6g %.6g 1/m\n",
-				PROG, k + 1, sh.arc, sh.kx, sh.ky);
-	}
-	fprintf(sum, "increments: %d\ncutbacks: %d\niterations: %d\nfactorisations: %d\n",
-		st.increments, st.cutbacks, st.iterations, st.factorisations);
+	for (int k = 0; k < set->nstep && !rc; k++)
+		rc = form_step(cl, j, k, sum, cost, e);
+	if (!rc)
+		fprintf(sum, "increments: %d\ncutbacks: %d\niterations: %d\nfactorisations: %d\n",
+			j->st.increments, j->st.cutbacks, j->st.iterations, j->st.factorisations);
 	fclose(sum);
-	sum = NULL;
-	if (cl.centre && (rc = write_centre(cl.centre, form, mesh.nz, &e)))
-		goto out;
-	if (cl.vtu && (rc = write_vtu(cl.vtu, form, &mesh, &e)))
-		goto out;
-	if ((rc = write_text(cl.com.output, sbuf, slen, &e)))
-		goto out;
-	dem_cost_time(&cost, "assemble", st.assemble_s);
-	dem_cost_time(&cost, "factor", st.factor_s);
-	dem_cost_time(&cost, "solve", st.solve_s);
-	dem_cost_count(&cost, "elements", (double)mesh.ne);
-	dem_cost_count(&cost, "equations", (double)st.neq);
-	dem_cost_count(&cost, "increments", st.increments);
-	dem_cost_count(&cost, "cutbacks", st.cutbacks);
-	dem_cost_count(&cost, "iterations", st.iterations);
-	dem_cost_count(&cost, "factorisations", st.factorisations);
-	dem_cost_count(&cost, "factor_nnz", st.lnz);
+	set->opts.ctx = NULL;
+	return rc;
+}
+
+static int write_outputs(const struct cmdline *cl, const struct job *j, dem_error_t *e)
+{
+	int rc;
+
+	if ((cl->centre && (rc = write_centre(cl->centre, j->form, j->mesh.nz, e))) ||
+	    (cl->vtu && (rc = write_vtu(cl->vtu, j->form, &j->mesh, e))))
+		return rc;
+	return write_text(cl->com.output, j->sbuf, j->slen, e);
+}
+
+static void report(const struct job *j, int blas, dem_cost_t *cost)
+{
+	const dem_form_stats_t *st = &j->st;
+
+	dem_cost_time(cost, "assemble", st->assemble_s);
+	dem_cost_time(cost, "factor", st->factor_s);
+	dem_cost_time(cost, "solve", st->solve_s);
+	dem_cost_count(cost, "elements", (double)j->mesh.ne);
+	dem_cost_count(cost, "equations", (double)st->neq);
+	dem_cost_count(cost, "increments", st->increments);
+	dem_cost_count(cost, "cutbacks", st->cutbacks);
+	dem_cost_count(cost, "iterations", st->iterations);
+	dem_cost_count(cost, "factorisations", st->factorisations);
+	dem_cost_count(cost, "factor_nnz", st->lnz);
 #ifdef _OPENMP
-	dem_cost_count(&cost, "threads", omp_get_max_threads());
+	dem_cost_count(cost, "threads", omp_get_max_threads());
 #endif
-	dem_cost_count(&cost, "blas_threads", blas);
-done:
-	rc = 0;
-out:
-	if (rc)
-		dem_cli_fail(PROG, rc, &e);
-	if (sum)
-		fclose(sum);
-	free(sbuf);
-	for (int k = 0; k < ip.nin; k++)
-		dem_profile_free(&ip.in[k]);
-	free(ip.in);
-	dem_form_free(form);
-	dem_mesh_free(&mesh);
-	dem_mat_free(&mat);
-	dem_scene_free(scene);
-	dem_common_free(&cl.com);
-	return rc ? rc : dem_cli_end(PROG, &cl.com, &cost);
+	dem_cost_count(cost, "blas_threads", blas);
+}
+
+int main(int argc, char **argv)
+{
+	struct cmdline cl;
+	struct job j = {0};
+	dem_main_t r;
+	int rc;
+
+	if ((rc = dem_main_start(&r, PROG, argc, argv)))
+		return rc;
+	if ((rc = parse_cmdline(argc, argv, &cl)) >= 0)
+		return dem_main_quit(&r, &cl.com, rc);
+	int blas = dem_form_threads((int)cl.threads);
+	if (!(rc = get_settings(&cl, &j, &r.e)) && !cl.com.dump &&
+	    !(rc = build(&cl, &j, &r.cost, &r.e)) &&
+	    !(rc = form_steps(&cl, &j, &r.cost, &r.e)) &&
+	    !(rc = write_outputs(&cl, &j, &r.e)))
+		report(&j, blas, &r.cost);
+	job_free(&j);
+	return dem_main_end(&r, &cl.com, rc);
 }

@@ -15,15 +15,12 @@
  * standard output or to -o FILE.  The scene's pack: section (and shot: for
  * shots) gives the defaults; options override it.
  */
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
-#include <gsl/gsl_errno.h>
-
+#include "core/afile.h"
 #include "core/cli.h"
 #include "core/consts.h"
 #include "core/cost.h"
@@ -181,14 +178,13 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 	dem_cli_t c;
 	dem_common_t *com = &cl->com;
 	unsigned long given = 0;        /* bit i: method_opts[i] was typed */
-	int k, done;
+	int k;
 
 	memset(cl, 0, sizeof *cl);
 	if (dem_common_init(com, argc) || dem_cli_init(&c, PROG, options, usage, purpose, epilogue))
 		return DEM_EIO;
-	while ((k = dem_cli_next(&c, argc, argv)) != -1) {
-		if (dem_cli_common(&c, k, optarg, com))
-			continue;       /* --accuracy: packings have no knob yet */
+	/* (of the common options, --accuracy has no use: packings have no knob yet) */
+	while ((k = dem_cli_option(&c, com, argc, argv)) != -1) {
 		if (k == OPT_VTK) {     /* an output, not a scene key */
 			cl->vtk = optarg;
 			continue;
@@ -211,8 +207,7 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 				return DEM_EIO;
 		}
 	}
-	done = c.done;
-	if (done < 0) {
+	if (c.done < 0) {
 		if (optind < argc)
 			cl->method = argv[optind++];
 		int m = -1;
@@ -234,11 +229,8 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 			dem_common_override(com, "pack.method", cl->method, cl->method);
 		if (optind < argc)
 			dem_cli_error(&c, "unexpected argument '%s'", argv[optind]);
-		if (dem_cli_finish(&c))
-			done = DEM_EUSAGE;
 	}
-	dem_cli_free(&c);
-	return done;
+	return dem_cli_done(&c);
 }
 
 /* A key whose items of per numbers are written flat, [a1, b1, a2, b2, ...]
@@ -791,21 +783,13 @@ static int write_compress(dem_compress_spec_t *cp, const struct cmdline *cl,
 	struct compress_out o = {NULL, h, &st, cl->com.output,
 				 (cl->com.binary ? DEM_STREAM_BINARY : 0) | (cl->com.gzip ? DEM_STREAM_GZIP : 0),
 				 cl->com.quiet, cl->com.verbose, e, 0, cl->vtk, NULL, NULL};
-	char *tmp = NULL;
+	dem_afile_t stages = {0};
 	if (cl->stages) {
-		size_t len = strlen(cl->stages) + 16;
-		tmp = malloc(len);
-		if (!tmp) {
-			gsl_rng_free(rng);
-			return dem_error_nomem(e, "stages");
-		}
-		snprintf(tmp, len, "%s.tmp%ld", cl->stages, (long)getpid());
-		if (!(o.stages = fopen(tmp, "w"))) {
-			rc = dem_error_set(e, DEM_EIO, "%s: %s", cl->stages, strerror(errno));
-			free(tmp);
+		if ((rc = dem_afile_open(&stages, cl->stages, "w", e))) {
 			gsl_rng_free(rng);
 			return rc;
 		}
+		o.stages = stages.f;
 		fprintf(o.stages, "# dempack compress stages: one row a stage\n"
 			"# seconds\tphase\tbatch\tspheres\tadded\titerations\tdensity\n");
 	}
@@ -824,18 +808,9 @@ static int write_compress(dem_compress_spec_t *cp, const struct cmdline *cl,
 		rc = dem_writer_close(o.w, e);
 		o.w = NULL;
 	}
-	if (o.stages) {
-		int bad = ferror(o.stages);
-		if (fclose(o.stages) || bad) {
-			if (rc == DEM_OK)
-				rc = dem_error_set(e, DEM_EIO, "%s: write error", cl->stages);
-		} else if (rc == DEM_OK && rename(tmp, cl->stages)) {
-			rc = dem_error_set(e, DEM_EIO, "%s: %s", cl->stages, strerror(errno));
-		}
-		if (rc)
-			remove(tmp);
-		free(tmp);
-	}
+	if (rc == DEM_OK && stages.f)
+		rc = dem_afile_commit(&stages, 0, e);
+	dem_afile_abort(&stages);       /* nothing left after a commit */
 	if (rc) {
 		dem_vtk_abort(o.vtk);
 		dem_writer_abort(o.w);
@@ -948,123 +923,115 @@ out:
 	return rc;
 }
 
+/* What the scene asks for: the method and its spec. */
+struct job {
+	dem_scene_t *scene;
+	int method;
+	dem_random_spec_t sp;
+	dem_front_spec_t fp;
+	dem_shots_spec_t hp;
+	dem_compress_spec_t cp;
+	dem_plane_t *planes;
+	dem_header_t h;         /* of the particle stream */
+};
+
+/* The scene's settings with the options' overrides; --dump-scene prints
+ * them. */
+static int get_settings(const struct cmdline *cl, struct job *j, dem_error_t *e)
+{
+	int rc = dem_scene_open(&j->scene, &cl->com, e);
+
+	if (!rc)
+		rc = read_scene(j->scene, &j->method, &j->sp, &j->fp, &j->hp, &j->cp, &j->planes,
+				cl->com.accuracy, e);
+	if (!rc && cl->com.dump)
+		dem_scene_dump(j->scene, stdout);
+	return rc;
+}
+
+/* The particle stream's header: its columns, provenance and seed. */
+static void particle_header(const struct cmdline *cl, struct job *j, const dem_main_t *r)
+{
+	const char *axes[] = {"x", "y", "z"};
+	int dim = j->method == METHOD_FRONT ? 2 : j->method == METHOD_COMPRESS ? 3 : j->sp.dim;
+
+	dem_header_init(&j->h, "particles", 1, dim);
+	for (int d = 0; d < dim; d++)
+		dem_header_add_col(&j->h, axes[d], DEM_F64, "m");
+	dem_header_add_col(&j->h, "r", DEM_F64, "m");
+	dem_header_add_provenance(&j->h, PROG, r->argc, r->args, 1, cl->com.seed);
+	dem_header_add(&j->h, "seed", "%lu", cl->com.seed);
+}
+
+/* dempack random: the domain depends on the radii drawn, so it is sized
+ * first, then the particles are written. */
+static int write_random(const struct cmdline *cl, struct job *j, dem_cost_t *cost, dem_error_t *e)
+{
+	const dem_random_spec_t *sp = &j->sp;
+	dem_writer_t *w = NULL;
+	char rmin[32], lambda[32], rho[32];
+	int rc;
+
+	dem_fmt_double(rmin, sp->law.rmin);
+	dem_fmt_double(lambda, sp->law.rmax / sp->law.rmin);
+	dem_fmt_double(rho, sp->density);
+	dem_header_add(&j->h, "method", "random law=%s rmin=%s lambda=%s density=%s",
+		       dem_radius_names[sp->law.kind], rmin, lambda, rho);
+
+	double hi[3] = {0, 0, 0};
+	if ((rc = dem_pack_random_domain(sp, cl->com.seed, hi, e)))
+		return rc;
+	char buf[160];
+	int n = 0;
+	for (int d = 0; d < sp->dim; d++)
+		n += snprintf(buf + n, sizeof buf - (size_t)n, "%s0", d ? " " : "");
+	for (int d = 0; d < sp->dim; d++) {
+		buf[n++] = ' ';
+		n += dem_fmt_double(buf + n, hi[d]);
+	}
+	dem_header_set(&j->h, "domain", "%s", buf);
+	int flags = (cl->com.binary ? DEM_STREAM_BINARY : 0) | (cl->com.gzip ? DEM_STREAM_GZIP : 0);
+	if ((rc = dem_writer_open(&w, cl->com.output, &j->h, flags, e)))
+		return rc;
+	double t0 = dem_wall();
+	struct emit_ctx ctx = {w, e, sp->dim};
+	if ((rc = dem_pack_random(sp, cl->com.seed, hi, emit, &ctx, e))) {
+		dem_writer_abort(w);
+		return rc;
+	}
+	if ((rc = dem_writer_close(w, e)))
+		return rc;
+	dem_cost_time(cost, "pack", dem_wall() - t0);
+	dem_cost_count(cost, "objects", (double)sp->n);
+	return DEM_OK;
+}
+
 int main(int argc, char **argv)
 {
 	struct cmdline cl;
-	dem_error_t e = {0};
-	dem_scene_t *scene = NULL;
-	dem_writer_t *w = NULL;
-	dem_random_spec_t sp;
-	dem_front_spec_t fp = {0};
-	dem_shots_spec_t hp = {0};
-	dem_compress_spec_t cp;
-	dem_plane_t *planes = NULL;
-	dem_header_t h = {0};   /* of the particle stream */
-	dem_cost_t cost;
-	int rc, method;
+	struct job j = {0};
+	dem_main_t r;
+	int rc;
 
-	dem_cost_start(&cost);
-	gsl_set_error_handler_off();
-	/* getopt reorders argv; the provenance keeps the order typed */
-	char **args = malloc(((size_t)argc + 1) * sizeof *args);
-	if (!args)
-		return DEM_EIO;
-	memcpy(args, argv, ((size_t)argc + 1) * sizeof *args);
-	if ((rc = parse_cmdline(argc, argv, &cl)) >= 0) {
-		free(args);
-		dem_common_free(&cl.com);
+	if ((rc = dem_main_start(&r, PROG, argc, argv)))
 		return rc;
-	}
-	if ((rc = dem_scene_load(&scene, cl.com.scene, &e)))
-		goto out;
-	if ((rc = dem_scene_override_all(scene, cl.com.ov, cl.com.nov, &e)))
-		goto out;
-	if ((rc = read_scene(scene, &method, &sp, &fp, &hp, &cp, &planes, cl.com.accuracy, &e)))
-		goto out;
-	if (cl.com.dump) {
-		free((double *)fp.polygon);
-		free(planes);
-		dem_scene_dump(scene, stdout);
-		dem_scene_free(scene);
-		free(args);
-		dem_common_free(&cl.com);
-		return dem_cli_close_stdout(PROG);
-	}
-
-	gsl_rng *probe = dem_rng_new(&cl.com.have_seed, &cl.com.seed);  /* draws a seed if none */
-	gsl_rng_free(probe);
-	if (method == METHOD_SHOTS) {
-		if ((rc = write_shots(&hp, &cl, argc, args, &cost, &e)))
-			goto out;
-		goto done;
-	}
-
-	/* The domain depends on the radii drawn: size it first, then write. */
-	const char *axes[] = {"x", "y", "z"};
-	int dim = method == METHOD_FRONT ? 2 : method == METHOD_COMPRESS ? 3 : sp.dim;
-	dem_header_init(&h, "particles", 1, dim);
-	for (int d = 0; d < dim; d++)
-		dem_header_add_col(&h, axes[d], DEM_F64, "m");
-	dem_header_add_col(&h, "r", DEM_F64, "m");
-	dem_header_add_provenance(&h, PROG, argc, args, 1, cl.com.seed);
-	dem_header_add(&h, "seed", "%lu", cl.com.seed);
-	if (method == METHOD_FRONT) {
-		if ((rc = write_front(&fp, &cl, &h, &cost, &e)))
-			goto out;
-		goto done;
-	}
-	if (method == METHOD_COMPRESS) {
-		if ((rc = write_compress(&cp, &cl, &h, &cost, &e)))
-			goto out;
-		goto done;
-	}
-	char rmin[32], lambda[32], rho[32];
-	dem_fmt_double(rmin, sp.law.rmin);
-	dem_fmt_double(lambda, sp.law.rmax / sp.law.rmin);
-	dem_fmt_double(rho, sp.density);
-	dem_header_add(&h, "method", "random law=%s rmin=%s lambda=%s density=%s",
-		       dem_radius_names[sp.law.kind], rmin, lambda, rho);
-
-	double hi[3] = {0, 0, 0};
-	if ((rc = dem_pack_random_domain(&sp, cl.com.seed, hi, &e)))
-		goto out;
-	{
-		char buf[160];
-		int n = 0;
-		for (int d = 0; d < sp.dim; d++)
-			n += snprintf(buf + n, sizeof buf - (size_t)n, "%s0", d ? " " : "");
-		for (int d = 0; d < sp.dim; d++) {
-			buf[n++] = ' ';
-			n += dem_fmt_double(buf + n, hi[d]);
+	if ((rc = parse_cmdline(argc, argv, &cl)) >= 0)
+		return dem_main_quit(&r, &cl.com, rc);
+	if (!(rc = get_settings(&cl, &j, &r.e)) && !cl.com.dump) {
+		gsl_rng *probe = dem_rng_new(&cl.com.have_seed, &cl.com.seed);  /* draws a seed if none */
+		gsl_rng_free(probe);
+		if (j.method == METHOD_SHOTS) {
+			rc = write_shots(&j.hp, &cl, r.argc, r.args, &r.cost, &r.e);
+		} else {
+			particle_header(&cl, &j, &r);
+			rc = j.method == METHOD_FRONT ? write_front(&j.fp, &cl, &j.h, &r.cost, &r.e) :
+			     j.method == METHOD_COMPRESS ? write_compress(&j.cp, &cl, &j.h, &r.cost, &r.e) :
+			     write_random(&cl, &j, &r.cost, &r.e);
 		}
-		dem_header_set(&h, "domain", "%s", buf);
 	}
-	int flags = (cl.com.binary ? DEM_STREAM_BINARY : 0) | (cl.com.gzip ? DEM_STREAM_GZIP : 0);
-	if ((rc = dem_writer_open(&w, cl.com.output, &h, flags, &e)))
-		goto out;
-	double t0 = dem_wall();
-	struct emit_ctx ctx = {w, &e, sp.dim};
-	if ((rc = dem_pack_random(&sp, cl.com.seed, hi, emit, &ctx, &e)))
-		goto out;
-	if ((rc = dem_writer_close(w, &e))) {
-		w = NULL;
-		goto out;
-	}
-	w = NULL;
-	dem_cost_time(&cost, "pack", dem_wall() - t0);
-	dem_cost_count(&cost, "objects", (double)sp.n);
-done:
-	rc = 0;
-out:
-	if (rc) {
-		dem_cli_fail(PROG, rc, &e);
-		dem_writer_abort(w);
-	}
-	free((double *)fp.polygon);
-	free(planes);
-	dem_header_free(&h);
-	dem_scene_free(scene);
-	free(args);
-	dem_common_free(&cl.com);
-	return rc ? rc : dem_cli_end(PROG, &cl.com, &cost);
+	free((double *)j.fp.polygon);
+	free(j.planes);
+	dem_header_free(&j.h);
+	dem_scene_free(j.scene);
+	return dem_main_end(&r, &cl.com, rc);
 }

@@ -19,8 +19,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <gsl/gsl_errno.h>
-
 #include "core/afile.h"
 #include "core/cli.h"
 #include "core/cost.h"
@@ -80,15 +78,15 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 {
 	dem_cli_t c;
 	dem_common_t *m = &cl->com;
-	int k, done, bins = 0, bin_size = 0;
+	int k, bins = 0, bin_size = 0;
 
 	memset(cl, 0, sizeof *cl);
 	cl->pass = PASS_ALL;
 	if (dem_common_init(m, argc) || dem_cli_init(&c, PROG, options, usage, purpose, epilogue))
 		return DEM_EIO;
-	while ((k = dem_cli_next(&c, argc, argv)) != -1) {
-		if (dem_cli_common(&c, k, optarg, m))
-			continue;       /* --seed, --accuracy: nothing random, no knob */
+	/* (of the common options, --seed and --accuracy have no use here:
+	 * nothing is random, no knob) */
+	while ((k = dem_cli_option(&c, m, argc, argv)) != -1) {
 		switch (k) {
 		case OPT_PASS:
 			if (strcmp(optarg, "all") == 0) {
@@ -124,19 +122,12 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 		default: break;
 		}
 	}
-	done = c.done;
-	if (done < 0) {
-		if (optind < argc)
-			cl->input = argv[optind++];
-		if (optind < argc)
-			dem_cli_error(&c, "unexpected argument '%s' (one input at most)", argv[optind]);
+	if (c.done < 0) {
+		cl->input = dem_cli_operand(&c, argc, argv, "input");
 		if (bins && bin_size)
 			dem_cli_error(&c, "--bins and --bin-size: give one or the other");
-		if (dem_cli_finish(&c))
-			done = DEM_EUSAGE;
 	}
-	dem_cli_free(&c);
-	return done;
+	return dem_cli_done(&c);
 }
 
 struct settings {
@@ -461,97 +452,100 @@ out:
 	return rc;
 }
 
+/* The scene's settings with the options' overrides; --dump-scene prints
+ * them. */
+static int get_settings(const struct cmdline *cl, struct settings *set, dem_error_t *e)
+{
+	dem_scene_t *scene = NULL;
+	int rc = dem_scene_open(&scene, &cl->com, e);
+
+	if (!rc)
+		rc = read_scene(scene, set, e);
+	if (!rc && cl->com.dump)
+		dem_scene_dump(scene, stdout);
+	dem_scene_free(scene);
+	return rc;
+}
+
+/* The state stream's mesh and the region to average over, checked
+ * against what the options ask of it. */
+static int open_input(struct run *u, dem_profile_opts_t *o, dem_cost_t *cost, dem_error_t *e)
+{
+	const struct cmdline *cl = u->cl;
+	double t = dem_wall();
+	int rc;
+
+	u->from = "block";
+	if ((rc = dem_state_reader_open(&u->rd, cl->input, e)))
+		return rc;
+	dem_cost_time(cost, "read", dem_wall() - t);
+	const dem_mesh_t *m = dem_state_mesh(u->rd);
+	if ((rc = find_region(u->st, u->rd, o, &u->from, e)))
+		return rc;
+	if (o->bin <= 0 && m->nx <= 0)
+		return dem_error_set(e, DEM_EINPUT, "%s: the mesh has no '# grid' (not structured): "
+				     "element layers cannot be told; give --bins or --bin-size",
+				     dem_state_name(u->rd));
+	if (cl->surface && m->nx <= 0)
+		return dem_error_set(e, DEM_EINPUT, "%s: the mesh has no '# grid' (not structured): "
+				     "no surface metrics (--surface)", dem_state_name(u->rd));
+	if (cl->com.verbose)
+		fprintf(stderr, "%s: %zu nodes, %zu elements; region x %g to %g m, y %g to %g m "
+			"(area from the %s); %s\n", PROG, m->nn, m->ne, o->lo[0], o->hi[0], o->lo[1],
+			o->hi[1], u->from, o->bin > 0 ? "depth bins" : "element layers");
+	u->o = o;
+	return DEM_OK;
+}
+
+/* Commit the tables and close the profile stream. */
+static int close_outputs(struct run *u, dem_cost_t *cost, dem_error_t *e)
+{
+	double t = dem_wall();
+	int rc;
+
+	if ((u->surf.f && (rc = dem_afile_commit(&u->surf, 0, e))) ||
+	    (u->sat.f && (rc = dem_afile_commit(&u->sat, 0, e))))
+		return rc;
+	rc = dem_writer_close(u->w, e);
+	u->w = NULL;
+	if (rc)
+		return rc;
+	dem_cost_time(cost, "write", dem_wall() - t);
+	return DEM_OK;
+}
+
 int main(int argc, char **argv)
 {
 	struct cmdline cl;
 	struct settings set = {0};
-	dem_error_t e = {0};
-	dem_scene_t *scene = NULL;
-	dem_state_reader_t *rd = NULL;
-	struct run run = {0};
-	dem_cost_t cost;
+	struct run run = {.cl = &cl, .st = &set};
+	dem_profile_opts_t o;
+	dem_main_t r;
 	size_t frames = 0;
 	int rc;
 
-	dem_cost_start(&cost);
-	gsl_set_error_handler_off();
-	char **args = malloc(((size_t)argc + 1) * sizeof *args);
-	if (!args)
-		return DEM_EIO;
-	memcpy(args, argv, ((size_t)argc + 1) * sizeof *args);
-	if ((rc = parse_cmdline(argc, argv, &cl)) >= 0) {
-		free(args);
-		dem_common_free(&cl.com);
+	if ((rc = dem_main_start(&r, PROG, argc, argv)))
 		return rc;
+	if ((rc = parse_cmdline(argc, argv, &cl)) >= 0)
+		return dem_main_quit(&r, &cl.com, rc);
+	run.argc = r.argc;
+	run.args = r.args;
+	if (!(rc = get_settings(&cl, &set, &r.e)) && !cl.com.dump &&
+	    !(rc = open_input(&run, &o, &r.cost, &r.e)) &&
+	    !(rc = profile_stream(&run, run.rd, &o, &r.cost, &frames, &r.e)) &&
+	    !(rc = close_outputs(&run, &r.cost, &r.e))) {
+		const dem_mesh_t *m = dem_state_mesh(run.rd);
+		dem_cost_count(&r.cost, "frames", (double)frames);
+		dem_cost_count(&r.cost, "passes", (double)run.passes);
+		dem_cost_count(&r.cost, "points", (double)run.points);
+		dem_cost_count(&r.cost, "elements", (double)m->ne);
+		dem_cost_count(&r.cost, "nodes", (double)m->nn);
 	}
-	run.cl = &cl;
-	run.st = &set;
-	if ((rc = dem_scene_load(&scene, cl.com.scene, &e)) ||
-	    (rc = dem_scene_override_all(scene, cl.com.ov, cl.com.nov, &e)) ||
-	    (rc = read_scene(scene, &set, &e)))
-		goto out;
-	if (cl.com.dump) {
-		dem_scene_dump(scene, stdout);
-		goto done;
-	}
-
-	double t = dem_wall();
-	dem_profile_opts_t o;
-	const char *from = "block";
-	if ((rc = dem_state_reader_open(&rd, cl.input, &e)))
-		goto out;
-	dem_cost_time(&cost, "read", dem_wall() - t);
-	const dem_mesh_t *m = dem_state_mesh(rd);
-	if ((rc = find_region(&set, rd, &o, &from, &e)))
-		goto out;
-	if (o.bin <= 0 && m->nx <= 0) {
-		rc = dem_error_set(&e, DEM_EINPUT, "%s: the mesh has no '# grid' (not structured): "
-				   "element layers cannot be told; give --bins or --bin-size",
-				   dem_state_name(rd));
-		goto out;
-	}
-	if (cl.surface && m->nx <= 0) {
-		rc = dem_error_set(&e, DEM_EINPUT, "%s: the mesh has no '# grid' (not structured): "
-				   "no surface metrics (--surface)", dem_state_name(rd));
-		goto out;
-	}
-	if (cl.com.verbose)
-		fprintf(stderr, "%s: %zu nodes, %zu elements; region x %g to %g m, y %g to %g m "
-			"(area from the %s); %s\n", PROG, m->nn, m->ne, o.lo[0], o.hi[0], o.lo[1],
-			o.hi[1], from, o.bin > 0 ? "depth bins" : "element layers");
-	run.rd = rd;
-	run.o = &o;
-	run.from = from;
-	run.argc = argc;
-	run.args = args;
-	if ((rc = profile_stream(&run, rd, &o, &cost, &frames, &e)))
-		goto out;
-	t = dem_wall();
-	if ((run.surf.f && (rc = dem_afile_commit(&run.surf, 0, &e))) ||
-	    (run.sat.f && (rc = dem_afile_commit(&run.sat, 0, &e))))
-		goto out;
-	rc = dem_writer_close(run.w, &e);
-	run.w = NULL;
-	if (rc)
-		goto out;
-	dem_cost_time(&cost, "write", dem_wall() - t);
-	dem_cost_count(&cost, "frames", (double)frames);
-	dem_cost_count(&cost, "passes", (double)run.passes);
-	dem_cost_count(&cost, "points", (double)run.points);
-	dem_cost_count(&cost, "elements", (double)m->ne);
-	dem_cost_count(&cost, "nodes", (double)m->nn);
-done:
-	rc = 0;
-out:
 	if (rc) {
-		dem_cli_fail(PROG, rc, &e);
 		dem_writer_abort(run.w);
 		dem_afile_abort(&run.surf);
 		dem_afile_abort(&run.sat);
 	}
-	dem_state_reader_close(rd);
-	dem_scene_free(scene);
-	free(args);
-	dem_common_free(&cl.com);
-	return rc ? rc : dem_cli_end(PROG, &cl.com, &cost);
+	dem_state_reader_close(run.rd);
+	return dem_main_end(&r, &cl.com, rc);
 }

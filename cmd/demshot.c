@@ -92,15 +92,13 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 {
 	dem_cli_t c;
 	dem_common_t *m = &cl->com;
-	int k, done;
+	int k;
 
 	memset(cl, 0, sizeof *cl);
 	if (dem_common_init(m, argc) ||
 	    dem_cli_init(&c, PROG, options, usage, purpose, epilogue))
 		return DEM_EIO;
-	while ((k = dem_cli_next(&c, argc, argv)) != -1) {
-		if (dem_cli_common(&c, k, optarg, m))
-			continue;
+	while ((k = dem_cli_option(&c, m, argc, argv)) != -1) {
 		switch (k) {
 		case OPT_END: dem_common_override(m, "run.end", optarg, "--end"); break;
 		case OPT_FRAMES: dem_common_override(m, "run.frames", optarg, "--frames"); break;
@@ -122,19 +120,12 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 		default: break;
 		}
 	}
-	done = c.done;
-	if (done < 0) {
-		if (optind < argc)
-			cl->shots = argv[optind++];
-		if (optind < argc)
-			dem_cli_error(&c, "unexpected argument '%s' (one shot stream at most)", argv[optind]);
+	if (c.done < 0) {
+		cl->shots = dem_cli_operand(&c, argc, argv, "shot stream");
 		if (cl->resume && !cl->checkpoint)
 			dem_cli_error(&c, "--resume needs --checkpoint FILE");
-		if (dem_cli_finish(&c))
-			done = DEM_EUSAGE;
 	}
-	dem_cli_free(&c);
-	return done;
+	return dem_cli_done(&c);
 }
 
 /* A pressure pulse on a rectangle of the top face. */
@@ -1021,194 +1012,244 @@ static int run_shots(dem_fe_t *fe, dem_shotset_t *S, const struct settings *st,
 	return DEM_OK;
 }
 
-int main(int argc, char **argv)
+/* A run: the block and its model, the shots, the outputs. */
+struct job {
+	dem_scene_t *scene;     /* kept: the checkpoint records it */
+	struct settings st;
+	struct fields f;
+	dem_fe_t *fe;
+	dem_shotset_t *S;
+	struct shotin in;
+	struct ckpt ck;
+	int have_in, have_ck;
+	dem_state_writer_t *w;
+	dem_writer_t *fw;
+	dem_fe_stats_t fs0;     /* a resumed run's model: the work before */
+	long passes;
+	double run_s;
+};
+
+static void job_free(struct job *j, int failed)
 {
-	struct cmdline cl;
-	struct settings st = {0};
-	struct fields f = {0};
-	dem_error_t e = {0};
-	dem_scene_t *scene = NULL;
-	dem_fe_t *fe = NULL;
-	dem_state_writer_t *w = NULL;
-	dem_writer_t *fw = NULL;
-	dem_shotset_t *S = NULL;
-	struct shotin in = {0};
-	struct ckpt ck = {0};
-	int have_in = 0, have_ck = 0;
-	dem_fe_stats_t fs0 = {0};   /* a resumed run's model: the work before */
-	long passes = 0;
-	dem_cost_t cost;
+	if (failed) {
+		dem_state_writer_abort(j->w);
+		dem_writer_abort(j->fw);
+		if (j->have_ck)
+			ck_close(&j->ck, 0);
+	}
+	if (j->have_in)
+		shotin_close(&j->in);
+	dem_shotset_free(j->S);
+	fields_free(&j->f);
+	dem_fe_free(j->fe);
+	settings_free(&j->st);
+	dem_scene_free(j->scene);
+}
+
+/* The scene's settings with the options' overrides; --dump-scene prints
+ * them. */
+static int get_settings(const struct cmdline *cl, struct job *j, dem_error_t *e)
+{
 	int rc;
 
-	dem_cost_start(&cost);
-	char **args = malloc(((size_t)argc + 1) * sizeof *args);
-	if (!args)
-		return DEM_EIO;
-	memcpy(args, argv, ((size_t)argc + 1) * sizeof *args);
-	if ((rc = parse_cmdline(argc, argv, &cl)) >= 0) {
-		free(args);
-		dem_common_free(&cl.com);
+	if ((rc = dem_scene_open(&j->scene, &cl->com, e)) ||
+	    (rc = read_scene(j->scene, cl->com.accuracy, cl->shots != NULL, &j->st, e)))
 		return rc;
-	}
-#ifdef _OPENMP
-	if (cl.threads)
-		omp_set_num_threads((int)cl.threads);
-#endif
-	double t = dem_wall();
-	if ((rc = dem_scene_load(&scene, cl.com.scene, &e)) ||
-	    (rc = dem_scene_override_all(scene, cl.com.ov, cl.com.nov, &e)) ||
-	    (rc = read_scene(scene, cl.com.accuracy, cl.shots != NULL, &st, &e)))
-		goto out;
-	if (cl.com.dump) {
-		dem_scene_dump(scene, stdout);
-		goto done;
-	}
-	if (!st.have_shots && (cl.forces || cl.checkpoint)) {
-		rc = dem_error_set(&e, DEM_EUSAGE, "%s needs shots (a shot stream)",
-				   cl.forces ? "--forces" : "--checkpoint");
-		goto out;
-	}
-	if (st.have_shots) {
-		/* Box 3.1: lambda 0.1-0.3 (Eq. 3.84), refused above 0.5 */
-		char msg[256];
-		switch (dem_dt_lambda_check(st.so.lambda, cl.force, msg, sizeof msg)) {
-		case DEM_LAMBDA_OK:
-			break;
-		case DEM_LAMBDA_WARN:
-		case DEM_LAMBDA_FORCED:
-			fprintf(stderr, "%s: warning: %s\n", PROG, msg);
-			break;
-		case DEM_LAMBDA_REFUSED:
-			rc = dem_error_set(&e, DEM_EUSAGE, "%s", msg);
-			goto out;
-		default:
-			rc = dem_error_set(&e, DEM_EINPUT, "%s", msg);
-			goto out;
-		}
-		have_in = 1;
-		if ((rc = shotin_open(&in, cl.shots && strcmp(cl.shots, "-") ? cl.shots : NULL, &e)))
-			goto out;
-		const char *a = dem_header_get(dem_reader_header(in.r), "area");
-		st.have_area = a && sscanf(a, "%lf %lf %lf %lf", &st.area[0], &st.area[1],
-					   &st.area[2], &st.area[3]) == 4;
-	}
-	if ((rc = dem_fe_create(&fe, &st.mesh, &st.mat, &st.fe, &e)) ||
-	    (st.have_load && (rc = apply_load(fe, &st, &e))))
-		goto out;
-	if (st.have_shots) {
-		if ((rc = dem_shotset_create(&S, &st.mesh, dem_fe_mass(fe), &st.cm, &st.so, &e)))
-			goto out;
-		dem_fe_set_load(fe, dem_shotset_hook, S);
-	}
-	if (fields_alloc(&f, &st.mesh)) {
-		rc = dem_error_nomem(&e, "fields");
-		goto out;
-	}
-	dem_cost_time(&cost, "setup", dem_wall() - t);
-	if (!cl.com.quiet || cl.com.verbose) {
-		fprintf(stderr, "%s: block of %zu elements (%d x %d x %d), %zu "
-			"nodes; stable step %.3g s\n", PROG, st.mesh.ne, st.mesh.nx,
-			st.mesh.ny, st.mesh.nz, st.mesh.nn, dem_fe_dt(fe));
-		log_effects(&st);
-	}
-	if ((rc = open_state(&cl, &st, argc, args, &w, &e)) ||
-	    (cl.forces && (rc = open_forces(cl.forces, argc, args, &fw, &e))))
-		goto out;
-	if (cl.checkpoint) {
-		have_ck = 1;
-		if ((rc = ck_init(&ck, cl.checkpoint, scene, cl.forces != NULL, &e)) ||
-		    (rc = cl.resume ? ck_resume(&ck, fe, &in, &st.mesh, w, fw, &f, &passes,
-						 cl.com.quiet, &e)
-				    : ck_fresh(&ck, &e)))
-			goto out;
-		dem_fe_stats(fe, &fs0);
-	}
-	t = dem_wall();
-	if (st.have_shots)
-		rc = run_shots(fe, S, &st, &in, cl.com.quiet, w, fw, &f, have_ck ? &ck : NULL,
-			       &passes, &e);
-	else
-		rc = run(fe, &st, cl.com.quiet, w, &f, &cost, &e);
-	if (rc)
-		goto out;
-	double run_s = dem_wall() - t;
-	dem_cost_time(&cost, "run", run_s);
-	rc = dem_state_writer_close(w, &e);
-	w = NULL;
-	if (!rc && fw) {
-		rc = dem_writer_close(fw, &e);
-		fw = NULL;
-	}
-	if (rc)
-		goto out;
-	if (have_ck) {
-		dem_cost_time(&cost, "checkpoint", ck.save_s);
-		dem_cost_count(&cost, "checkpoint_mb", (double)ck.size / 1048576);
-		ck_close(&ck, 1);
-		have_ck = 0;
-	}
-	if (cl.vtu && (rc = dem_vtu_write(cl.vtu, &st.mesh,
-					  &(dem_vtu_fields_t){f.u, f.sig, f.eps, f.ep},
-					  1, &e)))
-		goto out;
+	if (cl->com.dump)
+		dem_scene_dump(j->scene, stdout);
+	return DEM_OK;
+}
 
+/* The shot stream, when the scene has shots: its time step checked
+ * first (Box 3.1: lambda 0.1-0.3, Eq. 3.84, refused above 0.5). */
+static int open_shots(const struct cmdline *cl, struct job *j, dem_error_t *e)
+{
+	struct settings *st = &j->st;
+	char msg[256];
+	int rc;
+
+	if (!st->have_shots && (cl->forces || cl->checkpoint))
+		return dem_error_set(e, DEM_EUSAGE, "%s needs shots (a shot stream)",
+				     cl->forces ? "--forces" : "--checkpoint");
+	if (!st->have_shots)
+		return DEM_OK;
+	switch (dem_dt_lambda_check(st->so.lambda, cl->force, msg, sizeof msg)) {
+	case DEM_LAMBDA_OK:
+		break;
+	case DEM_LAMBDA_WARN:
+	case DEM_LAMBDA_FORCED:
+		fprintf(stderr, "%s: warning: %s\n", PROG, msg);
+		break;
+	case DEM_LAMBDA_REFUSED:
+		return dem_error_set(e, DEM_EUSAGE, "%s", msg);
+	default:
+		return dem_error_set(e, DEM_EINPUT, "%s", msg);
+	}
+	j->have_in = 1;
+	if ((rc = shotin_open(&j->in, cl->shots && strcmp(cl->shots, "-") ? cl->shots : NULL, e)))
+		return rc;
+	const char *a = dem_header_get(dem_reader_header(j->in.r), "area");
+	st->have_area = a && sscanf(a, "%lf %lf %lf %lf", &st->area[0], &st->area[1],
+				    &st->area[2], &st->area[3]) == 4;
+	return DEM_OK;
+}
+
+/* The block's model, its load or its shots, and the fields it writes;
+ * the setup's time counts from t0. */
+static int build(const struct cmdline *cl, struct job *j, double t0, dem_cost_t *cost,
+		 dem_error_t *e)
+{
+	struct settings *st = &j->st;
+	int rc;
+
+	if ((rc = dem_fe_create(&j->fe, &st->mesh, &st->mat, &st->fe, e)) ||
+	    (st->have_load && (rc = apply_load(j->fe, st, e))))
+		return rc;
+	if (st->have_shots) {
+		if ((rc = dem_shotset_create(&j->S, &st->mesh, dem_fe_mass(j->fe), &st->cm, &st->so, e)))
+			return rc;
+		dem_fe_set_load(j->fe, dem_shotset_hook, j->S);
+	}
+	if (fields_alloc(&j->f, &st->mesh))
+		return dem_error_nomem(e, "fields");
+	dem_cost_time(cost, "setup", dem_wall() - t0);
+	if (!cl->com.quiet || cl->com.verbose) {
+		fprintf(stderr, "%s: block of %zu elements (%d x %d x %d), %zu "
+			"nodes; stable step %.3g s\n", PROG, st->mesh.ne, st->mesh.nx,
+			st->mesh.ny, st->mesh.nz, st->mesh.nn, dem_fe_dt(j->fe));
+		log_effects(st);
+	}
+	return DEM_OK;
+}
+
+/* The state stream, the force history, and the checkpoint (a fresh one,
+ * or the run so far restored from it with --resume). */
+static int open_outputs(const struct cmdline *cl, struct job *j, const dem_main_t *r,
+			dem_error_t *e)
+{
+	int rc;
+
+	if ((rc = open_state(cl, &j->st, r->argc, r->args, &j->w, e)) ||
+	    (cl->forces && (rc = open_forces(cl->forces, r->argc, r->args, &j->fw, e))))
+		return rc;
+	if (!cl->checkpoint)
+		return DEM_OK;
+	j->have_ck = 1;
+	if ((rc = ck_init(&j->ck, cl->checkpoint, j->scene, cl->forces != NULL, e)) ||
+	    (rc = cl->resume ? ck_resume(&j->ck, j->fe, &j->in, &j->st.mesh, j->w, j->fw, &j->f,
+					 &j->passes, cl->com.quiet, e)
+			     : ck_fresh(&j->ck, e)))
+		return rc;
+	dem_fe_stats(j->fe, &j->fs0);
+	return DEM_OK;
+}
+
+/* The time loop (shots pass by pass, or the pressure pulse), then the
+ * outputs closed and the last state for ParaView. */
+static int run_job(const struct cmdline *cl, struct job *j, dem_cost_t *cost, dem_error_t *e)
+{
+	struct settings *st = &j->st;
+	double t = dem_wall();
+	int rc;
+
+	if (st->have_shots)
+		rc = run_shots(j->fe, j->S, st, &j->in, cl->com.quiet, j->w, j->fw, &j->f,
+			       j->have_ck ? &j->ck : NULL, &j->passes, e);
+	else
+		rc = run(j->fe, st, cl->com.quiet, j->w, &j->f, cost, e);
+	if (rc)
+		return rc;
+	j->run_s = dem_wall() - t;
+	dem_cost_time(cost, "run", j->run_s);
+	rc = dem_state_writer_close(j->w, e);
+	j->w = NULL;
+	if (!rc && j->fw) {
+		rc = dem_writer_close(j->fw, e);
+		j->fw = NULL;
+	}
+	if (rc)
+		return rc;
+	if (j->have_ck) {
+		dem_cost_time(cost, "checkpoint", j->ck.save_s);
+		dem_cost_count(cost, "checkpoint_mb", (double)j->ck.size / 1048576);
+		ck_close(&j->ck, 1);
+		j->have_ck = 0;
+	}
+	if (cl->vtu)
+		return dem_vtu_write(cl->vtu, &st->mesh,
+				     &(dem_vtu_fields_t){j->f.u, j->f.sig, j->f.eps, j->f.ep}, 1, e);
+	return DEM_OK;
+}
+
+/* The energies (-v), the share of the time per effect (DESIGN.md
+ * "Effects") and the cost line's counters. */
+static void report(const struct cmdline *cl, const struct job *j, dem_cost_t *cost)
+{
+	const struct settings *st = &j->st;
+	const double run_s = j->run_s;
 	dem_fe_energy_t en;
 	dem_fe_stats_t fs;
-	dem_fe_energy(fe, &en);
-	dem_fe_stats(fe, &fs);
+
+	dem_fe_energy(j->fe, &en);
+	dem_fe_stats(j->fe, &fs);
 	/* this process's work (steps stay the run's) */
-	fs.elem_s -= fs0.elem_s, fs.node_s -= fs0.node_s, fs.elem_cycles -= fs0.elem_cycles;
-	if (cl.com.verbose)
+	fs.elem_s -= j->fs0.elem_s, fs.node_s -= j->fs0.node_s, fs.elem_cycles -= j->fs0.elem_cycles;
+	if (cl->com.verbose)
 		fprintf(stderr, "%s: energies at t = %.6g s (J): kinetic %.6g, "
 			"internal %.6g (plastic %.6g), hourglass %.6g, damping "
 			"%.6g, external %.6g; balance %.3g\n", PROG, en.t,
 			en.kinetic, en.internal, en.plastic, en.hourglass,
 			en.damping, en.external, en.balance);
-	dem_cost_time(&cost, "element_loop", fs.elem_s);
-	dem_cost_time(&cost, "node_loop", fs.node_s);
-	dem_cost_count(&cost, "steps", (double)fs.steps);
-	dem_cost_count(&cost, "elements", (double)st.mesh.ne);
-	dem_cost_count(&cost, "elem_cycles", fs.elem_cycles);
-	dem_cost_count(&cost, "ns_per_elem_cycle",
+	dem_cost_time(cost, "element_loop", fs.elem_s);
+	dem_cost_time(cost, "node_loop", fs.node_s);
+	dem_cost_count(cost, "steps", (double)fs.steps);
+	dem_cost_count(cost, "elements", (double)st->mesh.ne);
+	dem_cost_count(cost, "elem_cycles", fs.elem_cycles);
+	dem_cost_count(cost, "ns_per_elem_cycle",
 		       fs.elem_cycles > 0 ? 1e9 * (fs.elem_s + fs.node_s) / fs.elem_cycles : 0);
-	dem_cost_count(&cost, "energy_error", en.scale > 0 ? fabs(en.balance) / en.scale : 0);
-	if (S) {
-		dem_shotset_stats_t ss;
-		dem_shotset_stats(S, &ss);
-		/* the share of the time per effect (DESIGN.md "Effects") */
-		if (!cl.com.quiet && run_s > 0)
-			fprintf(stderr, "%s: time: elements %.0f%%, contact (%s) %.0f%%, "
-				"candidates %.0f%%, shot motion %.0f%%, other %.0f%%\n", PROG,
-				100 * (fs.elem_s + fs.node_s) / run_s, st.cm.effects,
-				100 * ss.contact_s / run_s, 100 * ss.detect_s / run_s,
-				100 * ss.integrate_s / run_s, 100 * (run_s - fs.elem_s - fs.node_s
-				- ss.contact_s - ss.detect_s - ss.integrate_s) / run_s);
-		dem_cost_time(&cost, "contact", ss.contact_s);
-		dem_cost_time(&cost, "detect", ss.detect_s);
-		dem_cost_count(&cost, "passes", (double)passes);
-		dem_cost_count(&cost, "rebuilds", (double)ss.rebuilds);
-		dem_cost_count(&cost, "contacts", ss.contacts);
-		dem_cost_count(&cost, "ns_per_contact",
-			       ss.contacts > 0 ? 1e9 * ss.contact_s / ss.contacts : 0);
-	}
-done:
-	rc = 0;
-out:
-	if (rc) {
-		dem_cli_fail(PROG, rc, &e);
-		dem_state_writer_abort(w);
-		dem_writer_abort(fw);
-		if (have_ck)
-			ck_close(&ck, 0);
-	}
-	if (have_in)
-		shotin_close(&in);
-	dem_shotset_free(S);
-	fields_free(&f);
-	dem_fe_free(fe);
-	settings_free(&st);
-	dem_scene_free(scene);
-	free(args);
-	dem_common_free(&cl.com);
-	return rc ? rc : dem_cli_end(PROG, &cl.com, &cost);
+	dem_cost_count(cost, "energy_error", en.scale > 0 ? fabs(en.balance) / en.scale : 0);
+	if (!j->S)
+		return;
+	dem_shotset_stats_t ss;
+	dem_shotset_stats(j->S, &ss);
+	if (!cl->com.quiet && run_s > 0)
+		fprintf(stderr, "%s: time: elements %.0f%%, contact (%s) %.0f%%, "
+			"candidates %.0f%%, shot motion %.0f%%, other %.0f%%\n", PROG,
+			100 * (fs.elem_s + fs.node_s) / run_s, st->cm.effects,
+			100 * ss.contact_s / run_s, 100 * ss.detect_s / run_s,
+			100 * ss.integrate_s / run_s, 100 * (run_s - fs.elem_s - fs.node_s
+			- ss.contact_s - ss.detect_s - ss.integrate_s) / run_s);
+	dem_cost_time(cost, "contact", ss.contact_s);
+	dem_cost_time(cost, "detect", ss.detect_s);
+	dem_cost_count(cost, "passes", (double)j->passes);
+	dem_cost_count(cost, "rebuilds", (double)ss.rebuilds);
+	dem_cost_count(cost, "contacts", ss.contacts);
+	dem_cost_count(cost, "ns_per_contact",
+		       ss.contacts > 0 ? 1e9 * ss.contact_s / ss.contacts : 0);
+}
+
+int main(int argc, char **argv)
+{
+	struct cmdline cl;
+	struct job j = {0};
+	dem_main_t r;
+	int rc;
+
+	if ((rc = dem_main_start(&r, PROG, argc, argv)))
+		return rc;
+	if ((rc = parse_cmdline(argc, argv, &cl)) >= 0)
+		return dem_main_quit(&r, &cl.com, rc);
+#ifdef _OPENMP
+	if (cl.threads)
+		omp_set_num_threads((int)cl.threads);
+#endif
+	double t0 = dem_wall();
+	if (!(rc = get_settings(&cl, &j, &r.e)) && !cl.com.dump &&
+	    !(rc = open_shots(&cl, &j, &r.e)) &&
+	    !(rc = build(&cl, &j, t0, &r.cost, &r.e)) &&
+	    !(rc = open_outputs(&cl, &j, &r, &r.e)) &&
+	    !(rc = run_job(&cl, &j, &r.cost, &r.e)))
+		report(&cl, &j, &r.cost);
+	job_free(&j, rc != 0);
+	return dem_main_end(&r, &cl.com, rc);
 }

@@ -7,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <gsl/gsl_errno.h>
+
 #include "core/error.h"
 
 int dem_cli_init(dem_cli_t *c, const char *prog, const dem_opt_t *opts,
@@ -234,6 +236,34 @@ int dem_cli_common(dem_cli_t *c, int key, const char *arg, dem_common_t *m)
 	return 1;
 }
 
+int dem_cli_option(dem_cli_t *c, dem_common_t *m, int argc, char **argv)
+{
+	int k;
+
+	while ((k = dem_cli_next(c, argc, argv)) != -1 && dem_cli_common(c, k, optarg, m))
+		;
+	return k;
+}
+
+const char *dem_cli_operand(dem_cli_t *c, int argc, char **argv, const char *what)
+{
+	const char *arg = optind < argc ? argv[optind++] : NULL;
+
+	if (optind < argc)
+		dem_cli_error(c, "unexpected argument '%s' (one %s at most)", argv[optind], what);
+	return arg;
+}
+
+int dem_cli_done(dem_cli_t *c)
+{
+	int done = c->done;
+
+	if (done < 0 && dem_cli_finish(c))
+		done = DEM_EUSAGE;
+	dem_cli_free(c);
+	return done;
+}
+
 int dem_cli_finish(const dem_cli_t *c)
 {
 	if (!c->nerr)
@@ -260,7 +290,8 @@ int dem_cli_end(const char *prog, const dem_common_t *m, const dem_cost_t *cost)
 {
 	int rc;
 
-	if (!m->output && (rc = dem_cli_close_stdout(prog)))
+	/* --dump-scene writes stdout whatever -o says */
+	if ((!m->output || m->dump) && (rc = dem_cli_close_stdout(prog)))
 		return rc;
 	if (!m->dump)
 		dem_cost_print(cost, prog, stderr);
@@ -272,5 +303,39 @@ int dem_cli_fail(const char *prog, int rc, const dem_error_t *e)
 	fprintf(stderr, "%s: %s\n", prog, e->msg);
 	if (rc == DEM_EUSAGE)
 		fprintf(stderr, "Try '%s --help' for more information.\n", prog);
+	return rc;
+}
+
+int dem_main_start(dem_main_t *r, const char *prog, int argc, char **argv)
+{
+	memset(r, 0, sizeof *r);
+	r->prog = prog;
+	dem_cost_start(&r->cost);
+	gsl_set_error_handler_off();
+	r->argc = argc;
+	r->args = malloc(((size_t)argc + 1) * sizeof *r->args);
+	if (!r->args)
+		return DEM_EIO;
+	memcpy(r->args, argv, ((size_t)argc + 1) * sizeof *r->args);
+	return DEM_OK;
+}
+
+int dem_main_quit(dem_main_t *r, dem_common_t *m, int rc)
+{
+	free(r->args);
+	r->args = NULL;
+	dem_common_free(m);
+	return rc;
+}
+
+int dem_main_end(dem_main_t *r, dem_common_t *m, int rc)
+{
+	if (rc)
+		dem_cli_fail(r->prog, rc, &r->e);
+	free(r->args);
+	r->args = NULL;
+	if (!rc)
+		rc = dem_cli_end(r->prog, m, &r->cost);
+	dem_common_free(m);
 	return rc;
 }

@@ -95,6 +95,27 @@ void dem_common_free(dem_common_t *m);
 /* Handle key when it is one of DEM_OPTS_COMMON (returns 1; --help and
  * --version print and set c->done to 0); 0 for the program's own keys. */
 int dem_cli_common(dem_cli_t *c, int key, const char *arg, dem_common_t *m);
+/* parse_cmdline's loop and its end:
+ *
+ *	while ((k = dem_cli_option(&c, m, argc, argv)) != -1)
+ *		switch (k) { the program's own options }
+ *	if (c.done < 0) {
+ *		cl->input = dem_cli_operand(&c, argc, argv, "input");
+ *		the program's checks of the whole command line
+ *	}
+ *	return dem_cli_done(&c);
+ *
+ * dem_cli_option: the next of the program's own option keys, -1 at the
+ * end; the common options (DEM_OPTS_COMMON) are handled on the way
+ * (dem_cli_common), errors counted.  dem_cli_operand: the one operand of a
+ * filter (NULL: none), a second one reported as "unexpected argument 'X'
+ * (one WHAT at most)".  dem_cli_done frees c's tables and returns -1 to go
+ * on to the work, or the exit code: 0 after --help or --version,
+ * DEM_EUSAGE (with the "Try" line) after usage errors. */
+int dem_cli_option(dem_cli_t *c, dem_common_t *m, int argc, char **argv);
+const char *dem_cli_operand(dem_cli_t *c, int argc, char **argv, const char *what);
+int dem_cli_done(dem_cli_t *c);
+
 /* Record that an option sets a scene key. */
 void dem_common_override(dem_common_t *m, const char *key, const char *text,
 			 const char *origin);
@@ -113,11 +134,47 @@ int dem_cli_close_stdout(const char *prog);
 
 /* The two ends of a program's main.  dem_cli_end, on success: close
  * standard output when the output went there (no --output), then print the
- * cost line last on stderr (not after --dump-scene); returns the exit code
+ * cost line last on stderr (not after --dump-scene, whose scene on standard
+ * output is closed whatever -o says); returns the exit code
  * (0, or DEM_EIO on a write error).  dem_cli_fail: report the error as
  * "prog: message", with the "Try 'prog --help'" line for a usage error;
  * returns rc. */
 int dem_cli_end(const char *prog, const dem_common_t *m, const dem_cost_t *cost);
 int dem_cli_fail(const char *prog, int rc, const dem_error_t *e);
+
+/* A program's main (STYLE.md 2) from its first line to its last:
+ *
+ *	dem_main_t r;
+ *	struct cmdline cl;
+ *	int rc;
+ *
+ *	if ((rc = dem_main_start(&r, PROG, argc, argv)))
+ *		return rc;
+ *	if ((rc = parse_cmdline(argc, argv, &cl)) >= 0)
+ *		return dem_main_quit(&r, &cl.com, rc);
+ *	rc = run(&r, &cl);   open, read, compute, write, close; errors in r.e
+ *	return dem_main_end(&r, &cl.com, rc);
+ *
+ * dem_main_start starts the cost clock, turns GSL's aborting error
+ * handler off (errors come back as codes) and keeps argv as typed, for
+ * the provenance: getopt reorders argv.  DEM_EIO without memory, with
+ * nothing to free.  dem_main_quit ends a program that stops before its
+ * work (--help, --version, a usage error already reported) with rc;
+ * dem_main_end ends the others: a failure (rc != 0) is reported from r->e
+ * (dem_cli_fail), a success closes standard output when the output went
+ * there and prints the cost line, not after --dump-scene (dem_cli_end).
+ * Both free what start made and the common options' overrides, and
+ * return the exit code. */
+typedef struct dem_main {
+	const char *prog;
+	int argc;
+	char **args;            /* argv as typed, NULL-terminated */
+	dem_cost_t cost;
+	dem_error_t e;
+} dem_main_t;
+
+int dem_main_start(dem_main_t *r, const char *prog, int argc, char **argv);
+int dem_main_quit(dem_main_t *r, dem_common_t *m, int rc);
+int dem_main_end(dem_main_t *r, dem_common_t *m, int rc);
 
 #endif

@@ -1087,6 +1087,12 @@ int dem_scene_override_all(dem_scene_t *s, const struct dem_override *ov,
 	return DEM_OK;
 }
 
+int dem_scene_open(dem_scene_t **s, const dem_common_t *m, dem_error_t *e)
+{
+	int rc = dem_scene_load(s, m->scene, e);
+	return rc ? rc : dem_scene_override_all(*s, m->ov, m->nov, e);
+}
+
 int dem_scene_override(dem_scene_t *s, const char *key, const char *text,
 		       const char *origin, dem_error_t *e)
 {

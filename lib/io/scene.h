@@ -47,6 +47,13 @@ struct dem_override;
 int dem_scene_override_all(dem_scene_t *s, const struct dem_override *ov,
 			   int n, dem_error_t *e);
 
+struct dem_common;
+
+/* A program's scene: the file its common options name (-s FILE; none:
+ * every key takes its default) with the keys its options set applied
+ * over it (dem_scene_load, then dem_scene_override_all). */
+int dem_scene_open(dem_scene_t **s, const struct dem_common *m, dem_error_t *e);
+
 /* Is key present (in the file or by override)? */
 int dem_scene_has(const dem_scene_t *s, const char *key);
 
