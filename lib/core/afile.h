@@ -1,9 +1,14 @@
-/* afile.h - a file written atomically: created under a temporary name
- * beside its final path (path.tmp.XXXXXX, mode 0644) and renamed into place
- * only when complete, so a reader never sees a half-written file and a
- * failure leaves no file behind (DESIGN.md, "Errors").  A path that exists
- * and is not a regular file (/dev/null, a terminal, a FIFO) is written in
- * place: renaming over it would replace the device with a file. */
+/* afile.h - a file written atomically: created beside its final path and
+ * renamed into place only when complete, so a reader never sees a
+ * half-written file and a failure leaves no file behind (DESIGN.md,
+ * "Errors").  Where the system offers it (Linux's O_TMPFILE, with /proc),
+ * the file has no name at all until the commit links it as
+ * path.tmp.XXXXXX and renames that over path: a process killed by any
+ * signal, SIGKILL too, leaves nothing behind.  Elsewhere it is created as
+ * path.tmp.XXXXXX (mode 0644) from the start, removed on failure and on
+ * the signals dem_tmp_guard catches.  A path that exists and is not a
+ * regular file (/dev/null, a terminal, a FIFO) is written in place:
+ * renaming over it would replace the device with a file. */
 #ifndef DEM_CORE_AFILE_H
 #define DEM_CORE_AFILE_H
 
@@ -16,6 +21,9 @@ typedef struct dem_afile {
 	int fd;                 /* the temporary file's descriptor */
 	char *path, *tmp;       /* tmp NULL: path itself is written (not a
 				 * regular file), nothing to rename */
+	int anon, keep;         /* anon: the file is unnamed (O_TMPFILE) and
+				 * keep its own descriptor, open until the
+				 * commit names it tmp */
 } dem_afile_t;
 
 /* Create the temporary file; mode as for fdopen ("w" or "wb").  DEM_EIO

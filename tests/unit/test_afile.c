@@ -11,7 +11,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <dirent.h>
+#include <signal.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "core/afile.h"
@@ -84,6 +87,62 @@ static void test_afile_fd(void **state)
 	assert_int_equal(rmdir(dir), 0);                /* empty: no temporary left */
 }
 
+/* The entries in dir, . and .. aside. */
+static int entries(const char *dir)
+{
+	DIR *d = opendir(dir);
+	struct dirent *de;
+	int n = 0;
+
+	assert_non_null(d);
+	while ((de = readdir(d)))
+		n += strcmp(de->d_name, ".") != 0 && strcmp(de->d_name, "..") != 0;
+	closedir(d);
+	return n;
+}
+
+/* Where the file is unnamed until the commit (O_TMPFILE), a process
+ * killed by SIGKILL while writing, which no handler can catch, leaves
+ * nothing in the folder: neither the file nor a temporary. */
+static void test_afile_killed(void **state)
+{
+	char dir[] = "/tmp/dem-test-afile-XXXXXX", path[64];
+	dem_afile_t a;
+	dem_error_t e = {0};
+	int anon, st;
+
+	(void)state;
+	assert_non_null(mkdtemp(dir));
+	snprintf(path, sizeof path, "%s/out", dir);
+	assert_int_equal(dem_afile_open(&a, path, "w", &e), DEM_OK);
+	anon = a.anon;
+	fputs("hello", a.f);
+	fflush(a.f);
+	assert_int_equal(entries(dir), anon ? 0 : 1);   /* unnamed, or path.tmp.XXXXXX */
+	assert_int_equal(dem_afile_commit(&a, 0, &e), DEM_OK);
+	assert_int_equal(entries(dir), 1);              /* path alone */
+	assert_holds(path, "hello");
+	unlink(path);
+	if (!anon) {
+		assert_int_equal(rmdir(dir), 0);
+		skip();                 /* no O_TMPFILE here: named temporaries */
+	}
+	pid_t pid = fork();
+	assert_true(pid >= 0);
+	if (pid == 0) {
+		if (dem_afile_open(&a, path, "w", &e) != DEM_OK)
+			_exit(1);
+		fputs("half", a.f);
+		fflush(a.f);
+		raise(SIGKILL);
+		_exit(2);
+	}
+	assert_int_equal(waitpid(pid, &st, 0), pid);
+	assert_true(WIFSIGNALED(st) && WTERMSIG(st) == SIGKILL);
+	assert_int_equal(entries(dir), 0);
+	assert_int_equal(rmdir(dir), 0);
+}
+
 /* A FIFO (as a device such as /dev/null) is written in place: the reader
  * gets the bytes and the FIFO is still a FIFO, with no temporary beside
  * it.  Renaming a temporary over it (as for a regular file) would leave a
@@ -140,6 +199,7 @@ int main(void)
 		cmocka_unit_test(test_afile),
 		cmocka_unit_test(test_afile_fd),
 		cmocka_unit_test(test_afile_not_regular),
+		cmocka_unit_test(test_afile_killed),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
