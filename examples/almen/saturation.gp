@@ -1,5 +1,5 @@
 # saturation.gp - the Almen saturation curve: arc height against exposure
-# (passes), the fitted curve h = a (1 - exp(-b n)) and its saturation point
+# (passes of 4 shots on the tile), the fitted curve h = a (1 - exp(-b n)) and its saturation point
 # (T, 0.9 a) with the doubled exposure 2T, and the three-parameter curve
 # a (1 - exp(-b n^c)) (SAE J2597's forms, fitted by demfit).  Variables
 # (saturation.sh's fit.txt and the
@@ -7,7 +7,7 @@
 # T3, out
 set terminal pngcairo size 900,560 font ",11" enhanced
 set output out
-set title sprintf("Almen A strip, saturation curve: T = %.1f passes, intensity %.3f mm (%.4f in A)", T, intensity, intensity / 25.4)
+set title sprintf("Almen A strip, saturation curve: T = %.1f, intensity %.3f mm (%.4f in A)", T, intensity, intensity / 25.4)
 set xlabel "exposure (passes of 4 shots on the 1.68 mm tile)"
 set ylabel "arc height over 31.75 mm (mm)"
 set grid

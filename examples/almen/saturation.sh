@@ -1,6 +1,6 @@
 #!/bin/sh
 # saturation.sh CURVE [BIN] - the saturation point of an Almen saturation
-# curve (rows: passes, coverage, arc height in mm, curvatures x and y, and
+# curve (rows: exposure, coverage, arc height in mm, curvatures x and y, and
 # in runs since issue 25 the gauge reading in mm and the plastic coverage),
 # as 'key value' lines, by the library's fitter (demfit(1), SAE J2597's
 # forms fitted by GSL's nonlinear least squares; SAE J443's saturation
@@ -13,7 +13,7 @@
 #  - gauge_T, gauge_intensity, gauge_data_T, gauge_data_h: the same (the
 #    two-parameter curve and the rule) on the gauge reading, when the curve
 #    has it.
-# Lengths in mm, exposures in passes.
+# Lengths in mm, exposures as in the curve's first column.
 set -eu
 curve=$1
 bin=${2:-../../bin}
@@ -43,4 +43,4 @@ fit 3 ""
 if awk '!/^#/ { exit !(NF >= 6) }' "$curve"; then
 	fit 6 gauge_
 fi
-awk '!/^#/ { n = $1 } END { printf "nmax %d\n", n }' "$curve"
+awk '!/^#/ { n = $1 } END { printf "nmax %g\n", n }' "$curve"
