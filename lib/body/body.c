@@ -113,6 +113,7 @@ struct dem_de_ws {
 	dem_detect_ws_t *dws;
 	dem_detect_opts_t dopt;
 	size_t *voff;           /* body i's placed polygon: pool[voff[i]] */
+	size_t sized;           /* the bodies voff and pool were sized for */
 	double (*pool)[2];
 	size_t poolcap;
 	int maxnv;              /* the largest polygon, walls' 4 included */
@@ -443,6 +444,8 @@ static int ws_size(dem_de_t *de, dem_error_t *e)
 {
 	struct dem_de_ws *ws = de->ws;
 	size_t nb = de->n + de->nw, need = 0;
+	if (ws->boxes.n == nb && ws->sized == de->n)
+		return DEM_OK;          /* no body or wall added since the last step */
 	if (ws->boxcap < nb) {
 		dem_boxes_free(&ws->boxes);
 		if (dem_boxes_alloc(&ws->boxes, 2, nb))
@@ -464,6 +467,7 @@ static int ws_size(dem_de_t *de, dem_error_t *e)
 			return dem_error_nomem(e, "bodies");
 		ws->pool = q, ws->poolcap = need;
 	}
+	ws->sized = de->n;
 	return DEM_OK;
 }
 

@@ -12,7 +12,10 @@
  * momentum of two bodies in contact, with friction and damping, to
  * round-off); the degenerate contacts (touching without area, one body
  * inside the other, corner on corner) give no force and no NaN; absent
- * effects and the same effects at zero give the same motion bit for bit.
+ * effects and the same effects at zero give the same motion bit for bit;
+ * the body stream read back gives the bodies' values exactly (text,
+ * binary, gzip); a scene with a bad or missing key is refused naming
+ * file:line:col.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -26,7 +29,15 @@
 #include <string.h>
 
 #include "body/body.h"
+#include "body/frames.h"
+#include "body/setup.h"
+#include "core/cli.h"
 #include "core/consts.h"
+#include "core/rng.h"
+#include "io/scene.h"
+
+#define TMPDIR_PREFIX "/tmp/dem-body-"
+#include "tmpdir.h"
 
 static dem_de_param_t param(dem_wlaw_t law, double kn)
 {
@@ -342,6 +353,151 @@ static void test_effects_at_zero(void **state)
 	assert_memory_equal(a, c, sizeof a);
 }
 
+/* Frames written and read back: every value exact, in each format. */
+static void test_stream_round_trip(void **state)
+{
+	(void)state;
+	dem_shape_t s;
+	dem_de_t de;
+	dem_error_t e = {0};
+	dem_de_param_t p = param(DEM_W_LINEAR, 1e7);
+	p.gravity = 1, p.g[1] = -9.81;
+	assert_int_equal(dem_shape_init(&s, DEM_SHAPE_SUPERQUADRIC, 4.5e-3, 3.5e-3, 15, 1e-2, &e), 0);
+	assert_int_equal(dem_de_init(&de, &p, 1, &s, &e), 0);
+	double A[2] = {-0.1, 0}, B[2] = {0.1, 0};
+	dem_de_add_wall(&de, A, B, 0.01, &e);
+	for (int k = 0; k < 5; k++)
+		dem_de_add_body(&de, 0, 0.01 * k, 0.005 + 0.001 * k, 0.7 * k, 0.1 * k, -0.2, 3.0 / 7 * k, &e);
+	assert_int_equal(dem_de_start(&de, &e), 0);
+	const int flags[3] = {0, DEM_STREAM_BINARY, DEM_STREAM_GZIP};
+	for (int f = 0; f < 3; f++) {
+		dem_writer_t *w;
+		const char *file = path("bodies.txt");
+		char *argv[] = {"test", NULL};
+		assert_int_equal(dem_bodies_writer_open(&w, file, &de, "test", 1, argv, 1, 7, flags[f], &e), 0);
+		assert_int_equal(dem_bodies_write_frame(w, &de, 0, &e), 0);
+		assert_int_equal(dem_de_step(&de, &e), 0);
+		assert_int_equal(dem_bodies_write_frame(w, &de, 1, &e), 0);
+		assert_int_equal(dem_writer_close(w, &e), 0);
+		dem_reader_t *r;
+		dem_body_row_t row;
+		if (dem_bodies_reader_open(&r, file, &e))
+			fprintf(stderr, "# %s\n", e.msg);
+		assert_int_equal(e.code, 0);
+		const char *wl = dem_header_get(dem_reader_header(r), "wall");
+		assert_non_null(wl);
+		assert_string_equal(wl, "-0.1 0 0.1 0 0.01");
+		int rows = 0;
+		while (dem_bodies_reader_next(r, &row, &e) == 1) {
+			size_t i = row.id;
+			assert_true(i < de.n);
+			if (row.frame == 1) {
+				assert_true(row.t == de.t);
+				assert_true(row.x == de.x[i] && row.y == de.y[i] && row.th == de.th[i]);
+				assert_true(row.vx == de.vx[i] && row.vy == de.vy[i] && row.w == de.w[i]);
+			}
+			assert_true(row.shape == 0 && row.a == 4.5e-3 && row.b == 3.5e-3 && row.m == 15);
+			rows++;
+		}
+		if (e.code)
+			fprintf(stderr, "# %s\n", e.msg);
+		assert_int_equal(e.code, 0);
+		assert_int_equal(rows, 10);
+		dem_reader_close(r);
+	}
+	/* another kind of stream is refused */
+	write_text(path("p.txt"), "# dem particles 1\n# dim 2\n# columns x:f64:m y:f64:m r:f64:m\n"
+	           "# format text\n# data\n0 0 1\n# end 1\n");
+	dem_reader_t *r;
+	assert_int_equal(dem_bodies_reader_open(&r, path("p.txt"), &e), DEM_EINPUT);
+	if (!strstr(e.msg, "expected a body stream"))
+		fprintf(stderr, "# %s\n", e.msg);
+	assert_non_null(strstr(e.msg, "expected a body stream"));
+	/* the VTK polygons: one cell a body and a wall */
+	assert_int_equal(dem_bodies_vtu(path("b.vtu"), &de, &e), 0);
+	FILE *fp = fopen(path("b.vtu"), "r");
+	assert_non_null(fp);
+	char line[256];
+	int cells = -1;
+	while (fgets(line, sizeof line, fp))
+		if (sscanf(line, "<Piece NumberOfPoints=\"%*d\" NumberOfCells=\"%d\"", &cells) == 1)
+			break;
+	fclose(fp);
+	assert_int_equal(cells, 6);
+	dem_de_free(&de);
+	dem_shape_free(&s);
+}
+
+/* Load text as a scene and read it as a DE-only run (setup and the
+ * unknown-key check): the code, e filled; the run's bodies and the shape's
+ * points through n and nv. */
+static int from_scene(const char *text, dem_error_t *e, size_t *n, int *nv)
+{
+	dem_scene_t *sc;
+	dem_de_setup_t su;
+	dem_de_t de;
+	int have = 1;
+	unsigned long seed = 1;
+	gsl_rng *rng = dem_rng_new(&have, &seed);
+	write_text(path("s.yaml"), text);
+	assert_int_equal(dem_scene_load(&sc, path("s.yaml"), e), 0);
+	int rc = dem_de_setup_read(sc, DEM_ACCURACY_NORMAL, rng, &su, &de, e);
+	if (!rc) {
+		rc = dem_scene_check(sc, dem_de_sections, e);
+		*n = de.n, *nv = su.shape.nv;
+		dem_de_setup_free(&su, &de);
+	}
+	dem_scene_free(sc);
+	gsl_rng_free(rng);
+	return rc;
+}
+
+/* A scene's mistake: refused with its place in the file. */
+static void refuse(const char *text, const char *want)
+{
+	dem_error_t e = {0};
+	size_t n;
+	int nv;
+	int rc = from_scene(text, &e, &n, &nv);
+	if (rc != DEM_EINPUT || !strstr(e.msg, want))
+		fprintf(stderr, "# got %d '%s', want '%s'\n", rc, e.msg, want);
+	assert_int_equal(rc, DEM_EINPUT);
+	assert_non_null(strstr(e.msg, want));
+}
+
+static void test_scene_refusals(void **state)
+{
+	(void)state;
+	const char *ok = "bodies:\n  shape: polygon\n  sides: 3\n  a: 4 mm\n"
+	                 "  at: [0 mm, 10 mm, 20 mm, 10 mm]\n"
+	                 "contact:\n  kn: 1e6 Pa\nrun:\n  end: 1 ms\n  gravity: [0, -9.81 m/s^2]\n";
+	char buf[1024];
+	/* the good one passes */
+	dem_error_t e = {0};
+	size_t n = 0;
+	int nv = 0;
+	assert_int_equal(from_scene(ok, &e, &n, &nv), 0);
+	assert_int_equal((int)n, 2);
+	assert_int_equal(nv, 3);
+	snprintf(buf, sizeof buf, "%s  colour: red\n", ok);
+	refuse(buf, "s.yaml:11:3: unknown key 'run.colour'");
+	refuse("bodies:\n  shape: star\n  a: 1 mm\n", "s.yaml:2:10: bodies.shape");
+	refuse("bodies:\n  a: 1 mm\n  at: [0 mm, 0 mm]\nrun:\n  end: 1 s\n", "contact.kn: missing");
+	refuse("bodies:\n  a: 1 mm\n  at: [0 mm, 0 mm, 1 mm]\ncontact:\n  kn: 1 Pa\nrun:\n  end: 1 s\n",
+	       "s.yaml:3:7: bodies.at: expected x, y pairs");
+	refuse("bodies:\n  a: 1 mm\n  count: 50\n  region: [0 mm, 0 mm, 10 mm, 10 mm]\n"
+	       "contact:\n  kn: 1 Pa\nrun:\n  end: 1 s\n", "s.yaml:4:11: bodies.region: room for 16 bodies");
+	refuse("bodies:\n  shape: polygon\n  sides: 2\n  a: 1 mm\n", "s.yaml:3:10: bodies.sides");
+	refuse("bodies:\n  a: 1 mm\n  at: [0 mm, 0 mm]\ncontact:\n  kn: 1 Pa\nrun:\n  end: 1 s\n",
+	       "run.speed: missing");
+	refuse("bodies:\n  a: 1 mm\n  at: [0 mm, 0 mm]\nwalls:\n  segments: [0 mm, 0 mm, 1 mm]\n"
+	       "contact:\n  kn: 1 Pa\nrun:\n  end: 1 s\n  speed: 1 m/s\n", "s.yaml:5:13: walls.segments");
+	refuse("bodies:\n  a: 1 mm\n  at: [0 mm, 0 mm]\nwalls:\n  segments: [0 mm, 0 mm, 0 mm, 0 mm]\n"
+	       "contact:\n  kn: 1 Pa\nrun:\n  end: 1 s\n  speed: 1 m/s\n", "wall 1: wall");
+	refuse("bodies:\n  a: 1 mm\n  at: [0 mm, 0 mm]\ncontact:\n  kn: 1 mm\nrun:\n  end: 1 s\n",
+	       "s.yaml:5:7: contact.kn");
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -351,7 +507,9 @@ int main(void)
 		cmocka_unit_test(test_secant),
 		cmocka_unit_test(test_momentum),
 		cmocka_unit_test(test_effects_at_zero),
+		cmocka_unit_test(test_stream_round_trip),
+		cmocka_unit_test(test_scene_refusals),
 		cmocka_unit_test(test_energy),
 	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
+	return cmocka_run_group_tests(tests, setup, teardown);
 }
