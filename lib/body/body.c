@@ -320,9 +320,86 @@ static void segment(double r, double h, double *S, double *bw)
 	*bw = 2 * q;
 }
 
-/* Disk i against disk j (their lens) or wall j - n (the segment cut by its
- * face).  Moving i by u changes S by -bw (u . n), so F = W'(S) bw n at the
- * chord's middle (Eqs. 4.11-4.13, 4.27 with the exact circles). */
+/* The circle (centre c, radius r) against the convex polygon Q[nq]
+ * (anticlockwise): the overlap area S, and grad S for the circle moving,
+ * the sum over the arcs of the circle inside Q, each from h (where it
+ * enters) to g (where it leaves), of (dy, -dx) with (dx, dy) = g - h (the
+ * flux of a move through the arc: Eqs. 4.19-4.21, 4.31 with arcs for P's
+ * edges).  Returns the number of such arcs (0: apart, or one inside the
+ * other, where S does not change with a small move). */
+static int circle_polygon(const double c[2], double r, int nq, const double (*Q)[2], double *S,
+                          double grad[2])
+{
+	double ang[2 * 64 + 2];   /* the circle's crossings of Q's edges (2 an edge at most) */
+	int na = 0;
+	double area = 0;
+	grad[0] = grad[1] = 0;
+	/* the area: sum over Q's edges of the signed area of the circle within
+	 * the triangle (c, q_k, q_k+1), the edge cut at its crossings */
+	for (int k = 0; k < nq; k++) {
+		const double *A = Q[k], *B = Q[k + 1 == nq ? 0 : k + 1];
+		double ax = A[0] - c[0], ay = A[1] - c[1], dx = B[0] - A[0], dy = B[1] - A[1];
+		double a2 = dx * dx + dy * dy, b = ax * dx + ay * dy, cc = ax * ax + ay * ay - r * r;
+		double disc = b * b - a2 * cc, t[4] = {0, 0, 0, 1};
+		int nt = 1;
+		if (a2 > 0 && disc > 0) {
+			double q = sqrt(disc);
+			double t1 = (-b - q) / a2, t2 = (-b + q) / a2;
+			if (t1 > 0 && t1 < 1) {
+				t[nt++] = t1;
+				ang[na++] = atan2(ay + t1 * dy, ax + t1 * dx);
+			}
+			if (t2 > 0 && t2 < 1) {
+				t[nt++] = t2;
+				ang[na++] = atan2(ay + t2 * dy, ax + t2 * dx);
+			}
+		}
+		t[nt++] = 1;
+		for (int m = 0; m + 1 < nt; m++) {
+			double px = ax + t[m] * dx, py = ay + t[m] * dy;
+			double qx = ax + t[m + 1] * dx, qy = ay + t[m + 1] * dy;
+			double mx = 0.5 * (px + qx), my = 0.5 * (py + qy);
+			double cr = px * qy - py * qx;
+			if (mx * mx + my * my < r * r)
+				area += 0.5 * cr;       /* the piece inside the circle: its triangle */
+			else
+				area += 0.5 * r * r * atan2(cr, px * qx + py * qy);   /* a sector */
+		}
+	}
+	*S = area;
+	if (na < 2)
+		return 0;
+	/* the arcs between consecutive crossings whose middle lies in Q */
+	for (int k = 1; k < na; k++)
+		for (int m = k; m > 0 && ang[m] < ang[m - 1]; m--) {
+			double tt = ang[m];
+			ang[m] = ang[m - 1], ang[m - 1] = tt;
+		}
+	int arcs = 0;
+	for (int k = 0; k < na; k++) {
+		double a0 = ang[k], a1 = k + 1 < na ? ang[k + 1] : ang[0] + 2 * DEM_PI;
+		if (!(a1 > a0))
+			continue;
+		double am = 0.5 * (a0 + a1), mx = c[0] + r * cos(am), my = c[1] + r * sin(am);
+		int in = 1;
+		for (int q = 0; q < nq && in; q++) {
+			const double *A = Q[q], *B = Q[q + 1 == nq ? 0 : q + 1];
+			in = (B[0] - A[0]) * (my - A[1]) - (B[1] - A[1]) * (mx - A[0]) > 0;
+		}
+		if (!in)
+			continue;
+		double gx = r * (cos(a1) - cos(a0)), gy = r * (sin(a1) - sin(a0));   /* g - h */
+		grad[0] += gy, grad[1] -= gx;
+		arcs++;
+	}
+	return arcs;
+}
+
+/* Disk i against disk j (their lens) or wall j - n (the circle against the
+ * wall's rectangle, circle_polygon).  Moving i by u changes S by -bw (u . n),
+ * so F = W'(S) bw n (Eqs. 4.11-4.13 with the exact circles), through the
+ * centre: at the middle of the chord (the lens), or on the line of action
+ * at the chord's distance from the centre for a chord of length bw. */
 static int geo_disk(dem_de_t *de, uint32_t i, uint32_t j, struct geo *g)
 {
 	double ri = de->shape[de->sh[i]].a, S, bw;
@@ -338,20 +415,19 @@ static int geo_disk(dem_de_t *de, uint32_t i, uint32_t j, struct geo *g)
 		g->n[0] = dx / d, g->n[1] = dy / d;
 		g->c[0] = de->x[i] - d1 * g->n[0], g->c[1] = de->y[i] - d1 * g->n[1];
 	} else {
-		const double (*q)[2] = (const double (*)[2])de->wall[j - de->n];
-		/* face A = q[1] -> B = q[0], left normal towards the bodies */
-		double ax = q[1][0], ay = q[1][1], tx = q[0][0] - ax, ty = q[0][1] - ay;
-		double L = hypot(tx, ty);
-		tx /= L, ty /= L;
-		double h = (de->x[i] - ax) * -ty + (de->y[i] - ay) * tx;
-		if (h >= ri || h <= -ri)
+		double xc[2] = {de->x[i], de->y[i]}, grad[2];
+		if (!circle_polygon(xc, ri, 4, (const double (*)[2])de->wall[j - de->n], &S, grad))
 			return 0;
-		double s = (de->x[i] - ax) * tx + (de->y[i] - ay) * ty;
-		if (s < 0 || s > L)
+		bw = hypot(grad[0], grad[1]);
+		if (!(bw > 0))
 			return 0;
-		segment(ri, h, &S, &bw);
-		g->n[0] = -ty, g->n[1] = tx;
-		g->c[0] = ax + s * tx, g->c[1] = ay + s * ty;
+		g->n[0] = -grad[0] / bw, g->n[1] = -grad[1] / bw;
+		/* the chord's middle: towards the wall, or beyond the centre when
+		 * more than half the disk is in */
+		double h = sqrt(fmax(ri * ri - 0.25 * bw * bw, 0));
+		if (S > 0.5 * DEM_PI * ri * ri)
+			h = -h;
+		g->c[0] = xc[0] - h * g->n[0], g->c[1] = xc[1] - h * g->n[1];
 	}
 	if (!(S > 0) || !(bw > 0))
 		return 0;

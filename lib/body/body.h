@@ -12,15 +12,15 @@
  *                 circumradius a, one side flat at the bottom at theta = 0;
  *   disk          the circle of radius a, in contact exactly: the overlap
  *                 of two disks is their lens, of a disk and a wall the
- *                 circular segment cut by the wall's face.
+ *                 circle's part inside the wall's rectangle (its ends
+ *                 included).
  * Bodies are 2D: mass and moment of inertia are per unit thickness
  * (density times area, density times the polar moment of area).
  *
  * Walls.  A wall is the segment A -> B with the bodies on its left, made a
  * fixed convex polygon (the rectangle of the given thickness behind the
  * segment), so that a body meets it through the same polygon contact as
- * another body.  A disk sees only the wall's face (the foot of its centre
- * between A and B); at a wall's end the adjacent wall takes over.
+ * another body; a disk meets the same rectangle exactly.
  *
  * Contact (Ch. 4.4).  The energy W(S) of Table 4.2 on the overlap area S
  * gives the elastic force F = -dW/dx (Eqs. 4.10-4.13) at the reference

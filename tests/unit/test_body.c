@@ -159,6 +159,64 @@ static void test_degenerate(void **state)
 	dem_shape_free(&s[1]);
 }
 
+/* A disk against a wall's rectangle, across its face and round its end:
+ * the overlap area (the contact energy kn S of the linear law) against the
+ * circle's inscribed polygon clipped by the rectangle (an independent
+ * method, the polygon within 1e-9 of the circle's area), and the force
+ * against the finite differences of kn S (it is the energy's gradient). */
+static void test_disk_wall(void **state)
+{
+	(void)state;
+	dem_shape_t s;
+	dem_de_t de;
+	dem_error_t e = {0};
+	dem_de_param_t p = param(DEM_W_LINEAR, 1e7);
+	double r = 2e-3, A[2] = {0, 0}, B[2] = {0.05, 0};
+	static double v[1 << 17][2], o[1 << 18][2], w[1 << 18][2];
+	static unsigned char side[1 << 18];
+	int nv = dem_superquadric_polygon(r, r, 2, 1e-5, 1 << 17, v);
+	assert_true(nv > 0 && nv <= 1 << 17);
+	dem_area_props_t pr;
+	dem_polygon_props(nv, (const double (*)[2])v, &pr);
+	assert_true(fabs(pr.A - DEM_PI * r * r) < 1e-9 * DEM_PI * r * r);
+	assert_int_equal(dem_shape_init(&s, DEM_SHAPE_DISK, r, 0, 0, 0, &e), 0);
+	/* centres: across the face, over the end A, past it, half in, beyond the centre */
+	static const double at[][2] = {{0.02, 1.5e-3}, {0.5e-3, 1e-3}, {-1e-3, 1e-3},
+	                               {-1.2e-3, -0.5e-3}, {0.01, -0.7e-3}};
+	for (size_t k = 0; k < sizeof at / sizeof *at; k++) {
+		double x[3] = {at[k][0] - 1e-9, at[k][0], at[k][0] + 1e-9}, Wx[3], Wy[3];
+		double Fx = 0, Fy = 0, W = 0;
+		for (int d = 0; d < 2; d++)
+			for (int q = 0; q < 3; q++) {
+				assert_int_equal(dem_de_init(&de, &p, 1, &s, &e), 0);
+				assert_true(dem_de_add_wall(&de, A, B, 0.01, &e) == 0);
+				double xc = d == 0 ? x[q] : at[k][0], yc = at[k][1] + (d == 1 ? x[q] - at[k][0] : 0);
+				dem_de_add_body(&de, 0, xc, yc, 0, 0, 0, 0, &e);
+				assert_int_equal(dem_de_start(&de, &e), 0);
+				(d == 0 ? Wx : Wy)[q] = de.W;
+				if (q == 1 && d == 0)
+					Fx = de.fx[0], Fy = de.fy[0], W = de.W;
+				dem_de_free(&de);
+			}
+		/* the reference area: the fine polygon clipped by the rectangle */
+		double Q[4][2] = {{B[0], B[1]}, {A[0], A[1]}, {A[0], A[1] - 0.01}, {B[0], B[1] - 0.01}};
+		static double pv[1 << 17][2];
+		double c[2] = {at[k][0], at[k][1]};
+		dem_polygon_place(nv, (const double (*)[2])v, c, 0, pv);
+		dem_overlap_t ov;
+		dem_polygon_clip(nv, (const double (*)[2])pv, 4, (const double (*)[2])Q, o, side, w, &ov);
+		if (getenv("TEST_VERBOSE"))
+			fprintf(stderr, "# disk/wall %zu: S %.9g ref %.9g, F (%.6g, %.6g) fd (%.6g, %.6g)\n", k,
+			        W / p.kn, ov.S, Fx, Fy, -(Wx[2] - Wx[0]) / 2e-9, -(Wy[2] - Wy[0]) / 2e-9);
+		assert_true(W > 0);
+		assert_true(fabs(W / p.kn - ov.S) < 1e-8 * DEM_PI * r * r);
+		double F = hypot(Fx, Fy);
+		assert_true(fabs(Fx + (Wx[2] - Wx[0]) / 2e-9) < 1e-5 * F);
+		assert_true(fabs(Fy + (Wy[2] - Wy[0]) / 2e-9) < 1e-5 * F);
+	}
+	dem_shape_free(&s);
+}
+
 /* Box 3.1's secant stiffness against its closed forms. */
 static void test_secant(void **state)
 {
@@ -511,6 +569,7 @@ int main(void)
 		cmocka_unit_test(test_shapes),
 		cmocka_unit_test(test_flat_on_wall),
 		cmocka_unit_test(test_degenerate),
+		cmocka_unit_test(test_disk_wall),
 		cmocka_unit_test(test_secant),
 		cmocka_unit_test(test_momentum),
 		cmocka_unit_test(test_effects_at_zero),
