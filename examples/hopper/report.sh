@@ -84,7 +84,7 @@ contact phase (overlap, forces) over every candidate pair, of which the
 contacts are a part; per second: contacts / contact_s; against disks: how
 many times a disk contact's time a contact of the shape takes. Disks
 (radius 3.969 mm, the area of the m = 2 superquadric) meet in closed form
-(their lens), the polygons through the clip and the linear algorithm of
+(their lens; a wall's rectangle by arcs and triangles), the polygons through the clip and the linear algorithm of
 Ch. 4.3. overlap max: the largest overlap area over a body's area.
 
 | shape | points | steps | candidates | contacts | contact_s | contacts/s | time against disks | overlap max | run cpu_s |
