@@ -14,6 +14,9 @@
  *  - pressure pulses on the top face (the `load` section: the usual model
  *    of laser peening, and the test load of the explicit stage), frames
  *    evenly spaced up to run.end.
+ * A scene with a `bodies` section is a DE-only run instead (Ch. 4): rigid
+ * 2D superquadrics, polygons or disks with walls and gravity, no block
+ * (lib/body); it writes the body stream, frames evenly spaced.
  */
 #include <errno.h>
 #include <math.h>
@@ -29,11 +32,14 @@
 #include <omp.h>
 #endif
 
+#include "body/frames.h"
+#include "body/setup.h"
 #include "contact/law.h"
 #include "contact/model.h"
 #include "core/afile.h"
 #include "core/cli.h"
 #include "core/cost.h"
+#include "core/rng.h"
 #include "fe/explicit.h"
 #include "fe/fescene.h"
 #include "io/scene.h"
@@ -73,12 +79,15 @@ static const char purpose[] =
 	"under the shots of the shot stream SHOTS (standard input when the scene has\n"
 	"no load section) or the scene's pressure load, and write its state stream\n"
 	"(mesh, then displacements and element fields per pass or frame; binary,\n"
-	"gzip-compressed) to standard output.\n";
+	"gzip-compressed) to standard output.  A scene with a bodies section is a\n"
+	"DE-only run instead: rigid 2D superquadrics, polygons or disks with walls\n"
+	"and gravity (Feng-Owen contact, Ch. 4), written as a body stream.\n";
 static const char epilogue[] =
 	"Examples:\n"
 	"  dempack -s job.yaml shots | demshot -s job.yaml --forces f.txt -o job.state\n"
 	"  demshot -s pulse.yaml --frames 4 -o pulse.state\n"
 	"  demshot -s pulse.yaml --end 5us --rule full --vtu pulse.vtu | demprofile\n"
+	"  demshot -s hopper.yaml --seed 1 --vtu last.vtu -o bodies.txt\n"
 	"\nSee demshot(1), dem-scene(5) and dem-streams(5).\n";
 
 struct cmdline {
@@ -1027,10 +1036,23 @@ struct job {
 	dem_fe_stats_t fs0;     /* a resumed run's model: the work before */
 	long passes;
 	double run_s;
+	/* a DE-only run (a scene with bodies) */
+	int bodies;
+	unsigned long seed;
+	dem_de_setup_t su;
+	dem_de_t de;
+	gsl_rng *rng;
+	dem_writer_t *bw;
 };
 
 static void job_free(struct job *j, int failed)
 {
+	if (j->bodies) {
+		if (failed)
+			dem_writer_abort(j->bw);
+		dem_de_setup_free(&j->su, &j->de);
+		gsl_rng_free(j->rng);
+	}
 	if (failed) {
 		dem_state_writer_abort(j->w);
 		dem_writer_abort(j->fw);
@@ -1052,8 +1074,22 @@ static int get_settings(const struct cmdline *cl, struct job *j, dem_error_t *e)
 {
 	int rc;
 
-	if ((rc = dem_scene_open(&j->scene, &cl->com, e)) ||
-	    (rc = read_scene(j->scene, cl->com.accuracy, cl->shots != NULL, &j->st, e)))
+	if ((rc = dem_scene_open(&j->scene, &cl->com, e)))
+		return rc;
+	j->bodies = dem_scene_has(j->scene, "bodies");
+	if (j->bodies) {
+		int have_seed = cl->com.have_seed;
+		unsigned long seed = cl->com.seed;
+		if (!(j->rng = dem_rng_new(&have_seed, &seed)))
+			return dem_error_nomem(e, "random numbers");
+		j->seed = seed;
+		rc = dem_de_setup_read(j->scene, cl->com.accuracy, j->rng, &j->su, &j->de, e);
+		if (!rc)
+			rc = dem_scene_check(j->scene, dem_de_sections, e);
+	} else {
+		rc = read_scene(j->scene, cl->com.accuracy, cl->shots != NULL, &j->st, e);
+	}
+	if (rc)
 		return rc;
 	if (cl->com.dump)
 		dem_scene_dump(j->scene, stdout);
@@ -1228,6 +1264,85 @@ static void report(const struct cmdline *cl, const struct job *j, dem_cost_t *co
 		       ss.contacts > 0 ? 1e9 * ss.contact_s / ss.contacts : 0);
 }
 
+/* ---- the DE-only run ------------------------------------------------------- */
+
+/* The bodies of the scene to run.end, the body stream a frame at a time
+ * (the start's, then run.frames evenly spaced; each at the step nearest
+ * its time), the last frame as VTK polygons with --vtu; the cost line's
+ * phases and counters. */
+static int run_bodies(const struct cmdline *cl, struct job *j, const dem_main_t *r,
+		      dem_cost_t *cost, dem_error_t *e)
+{
+	dem_de_t *de = &j->de;
+	const dem_de_setup_t *su = &j->su;
+	int flags = (cl->com.binary ? DEM_STREAM_BINARY : 0) | (cl->com.gzip ? DEM_STREAM_GZIP : 0);
+	double next_report = dem_wall() + 2, t0 = dem_wall();
+	char fx[160];
+	int rc;
+
+	if (cl->shots || cl->forces || cl->checkpoint)
+		return dem_error_set(e, DEM_EUSAGE, "%s: a scene with bodies is a DE-only run "
+				     "(no shots, forces or checkpoint)", cl->shots ? cl->shots :
+				     cl->forces ? "--forces" : "--checkpoint");
+	if ((rc = dem_de_start(de, e)))
+		return rc;
+	dem_cost_time(cost, "setup", dem_wall() - t0);
+	if (!cl->com.quiet || cl->com.verbose)
+		fprintf(stderr, "%s: %zu %s bodies (%d points, %.4g kg/m each), %zu walls; "
+			"step %.3g s (lambda %g, v0 %.3g m/s); effects: %s\n", PROG, de->n,
+			dem_shape_kind_name(su->shape.kind), su->shape.nv, de->n ? de->mass[0] : 0,
+			de->nw, de->dt, de->p.lambda, de->p.v0, dem_de_effects(de, fx, sizeof fx));
+	if ((rc = dem_bodies_writer_open(&j->bw, cl->com.output, de, PROG, r->argc, r->args, 1,
+					 j->seed, flags, e)) ||
+	    (rc = dem_bodies_write_frame(j->bw, de, 0, e)))
+		return rc;
+	t0 = dem_wall();
+	double c0 = dem_cpu();
+	for (long k = 1; k <= su->frames; k++) {
+		double tf = su->end * (double)k / (double)su->frames;
+		while (de->t + 0.5 * de->dt < tf) {
+			if ((rc = dem_de_step(de, e)))
+				return rc;
+			if (!cl->com.quiet && dem_wall() > next_report) {
+				fprintf(stderr, "%s: t = %.4g s of %.4g (%.0f%%), step %ld, %zu "
+					"contacts\n", PROG, de->t, su->end, 100 * de->t / su->end,
+					de->steps, de->ncontact);
+				next_report = dem_wall() + 2;
+			}
+		}
+		if ((rc = dem_bodies_write_frame(j->bw, de, (unsigned)k, e)))
+			return rc;
+	}
+	j->run_s = dem_wall() - t0;
+	double run_cpu = dem_cpu() - c0;   /* the phases' clock */
+	rc = dem_writer_close(j->bw, e);
+	j->bw = NULL;
+	if (!rc && cl->vtu)
+		rc = dem_bodies_vtu(cl->vtu, de, e);
+	if (rc)
+		return rc;
+	/* the cost of the shape: contacts resolved a second */
+	dem_cost_time(cost, "run", j->run_s);
+	dem_cost_time(cost, "detect", de->st.detect_s);
+	dem_cost_time(cost, "contact", de->st.contact_s);
+	dem_cost_time(cost, "move", de->st.move_s);
+	dem_cost_count(cost, "steps", (double)de->steps);
+	dem_cost_count(cost, "bodies", (double)de->n);
+	dem_cost_count(cost, "points", (double)su->shape.nv);
+	dem_cost_count(cost, "candidates", (double)de->st.candidates);
+	dem_cost_count(cost, "contacts", (double)de->st.contacts);
+	dem_cost_count(cost, "overlap_max", de->st.overlap_max);
+	dem_cost_count(cost, "contacts_per_s",
+		       de->st.contact_s > 0 ? floor(de->st.contacts / de->st.contact_s) : 0);
+	if (!cl->com.quiet && run_cpu > 0)
+		fprintf(stderr, "%s: CPU time: contact %.0f%%, candidates %.0f%%, motion %.0f%%, "
+			"other %.0f%%\n", PROG, 100 * de->st.contact_s / run_cpu,
+			100 * de->st.detect_s / run_cpu, 100 * de->st.move_s / run_cpu,
+			100 * (run_cpu - de->st.contact_s - de->st.detect_s - de->st.move_s) /
+			run_cpu);
+	return DEM_OK;
+}
+
 int main(int argc, char **argv)
 {
 	struct cmdline cl;
@@ -1244,7 +1359,9 @@ int main(int argc, char **argv)
 		omp_set_num_threads((int)cl.threads);
 #endif
 	double t0 = dem_wall();
-	if (!(rc = get_settings(&cl, &j, &r.e)) && !cl.com.dump &&
+	if (!(rc = get_settings(&cl, &j, &r.e)) && !cl.com.dump && j.bodies)
+		rc = run_bodies(&cl, &j, &r, &r.cost, &r.e);
+	else if (!rc && !cl.com.dump &&
 	    !(rc = open_shots(&cl, &j, &r.e)) &&
 	    !(rc = build(&cl, &j, t0, &r.cost, &r.e)) &&
 	    !(rc = open_outputs(&cl, &j, &r, &r.e)) &&

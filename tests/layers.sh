@@ -12,7 +12,7 @@ LAYERS='
 core
 mesh
 io contact detect
-fe pack
+fe pack body
 shot
 '
 # Within a folder: a front end and the header of its own .c.  No other

@@ -88,6 +88,14 @@ int dem_pairs_grow(dem_pairs_t *p)
 }
 
 /* LSD radix sort by j then by i, 16 bits a pass, over the bits in use. */
+static int pair_cmp(const void *a, const void *b)
+{
+	const dem_pair_t *x = a, *y = b;
+	if (x->i != y->i)
+		return x->i < y->i ? -1 : 1;
+	return x->j < y->j ? -1 : x->j > y->j;
+}
+
 int dem_pairs_sort(dem_pairs_t *p)
 {
 	enum { R = 16, B = 1 << R };
@@ -95,6 +103,12 @@ int dem_pairs_sort(dem_pairs_t *p)
 
 	if (p->n < 2)
 		return DEM_OK;
+	/* a short list: the radix passes' 2^16 counters would cost more than
+	 * sorting it (a DE run sorts its few hundred pairs every step) */
+	if (p->n < 4096) {
+		qsort(p->p, p->n, sizeof *p->p, pair_cmp);
+		return DEM_OK;
+	}
 	for (size_t k = 0; k < p->n; k++)
 		maxv = p->p[k].j > maxv ? p->p[k].j : maxv;
 	dem_pair_t *tmp = malloc(p->n * sizeof *tmp);

@@ -23,7 +23,7 @@
 
 static const char *const known_kinds[] = {
 	"particles", "boxes", "pairs", "shots", "state", "history",
-	"profile", "form", NULL
+	"profile", "form", "bodies", NULL
 };
 
 int dem_stream_kind_known(const char *kind)

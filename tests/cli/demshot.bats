@@ -454,8 +454,11 @@ YAML
 		env --default-signal=TERM,HUP demshot -s "$T/shot.yaml" -q --pass-time 2000us \
 			-o "$T/k.state" "$T/s2.txt" 2> /dev/null &
 		pid=$!
-		for i in $(seq 100); do ls "$T"/k.state.tmp.* > /dev/null 2>&1 && break; sleep 0.05; done
-		ls "$T"/k.state.tmp.*
+		# writing: a named temporary, or (O_TMPFILE, lib/core/afile.c) an
+		# unnamed file open in $T, which /proc shows as $T/#INODE (deleted)
+		writing() { ls "$T"/k.state.tmp.* > /dev/null 2>&1 || ls -l /proc/$pid/fd 2> /dev/null | grep -q "$T/#"; }
+		for i in $(seq 100); do writing && break; sleep 0.05; done
+		writing
 		kill -$sig $pid
 		st=0
 		wait $pid || st=$?
