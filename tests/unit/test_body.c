@@ -37,6 +37,7 @@
 #include "io/scene.h"
 
 #define TMPDIR_PREFIX "/tmp/dem-body-"
+#include "slow.h"
 #include "tmpdir.h"
 
 static dem_de_param_t param(dem_wlaw_t law, double kn)
@@ -308,14 +309,8 @@ static void test_energy(void **state)
 	 * 7.6e-4 at 0.1, 1.1e-4 at 0.05): the m = 2 ellipse at 0.1, the
 	 * blockier m = 5 at the default 0.2 */
 	static const struct { double m, lambda; } run[] = {{2, 0.1}, {5, 0.2}};
-	/* under the sanitizers (three times the time) the first case only:
-	 * they check the memory of the loop, which the first case runs whole */
-#ifdef __SANITIZE_ADDRESS__
-	const int nrun = 1;
-#else
-	const int nrun = 2;
-#endif
-	for (int k = 0; k < nrun; k++) {
+	/* under the sanitizers the first case only (slow.h) */
+	for (int k = 0; k < SLOW_CASES(2, 1); k++) {
 		double d;
 		long n;
 		run_bounce(DEM_W_HERTZ, 1e10, run[k].m, run[k].lambda, &d, &n);

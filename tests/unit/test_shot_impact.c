@@ -50,12 +50,8 @@
 #include "shot/shotset.h"
 
 /* Under the sanitizers (minutes a run) the slow sweeps run their first
- * case only; the plain build runs them all. */
-#ifdef __SANITIZE_ADDRESS__
-#define SLOW_CASES(all, sanitized) (sanitized)
-#else
-#define SLOW_CASES(all, sanitized) (all)
-#endif
+ * case only (slow.h); the plain build runs them all. */
+#include "slow.h"
 
 /* ---- the set-up ---------------------------------------------------------- */
 
