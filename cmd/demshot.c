@@ -638,7 +638,7 @@ static int open_forces(const char *path, int argc, char **args, dem_writer_t **w
  * states do not persist across passes (dem_shotset_begin starts afresh),
  * so the model and the position in the shot stream are the whole state. */
 
-#define CK_VERSION 1
+#define CK_VERSION 2
 static const char ck_magic[8] = "DEMSHOT\x01";
 enum { J_FRAME = 1, J_FORCE = 2 };
 
@@ -649,6 +649,8 @@ typedef struct ck_head {
 	int64_t passes;
 	uint64_t jlen;
 	uint32_t jcrc, pad;
+	double wall_s, cpu_s;   /* what the run has spent to this checkpoint, over
+				 * all the processes that made it (version 2) */
 } ck_head_t;
 
 struct ckpt {
@@ -662,6 +664,9 @@ struct ckpt {
 	long stop_after;        /* DEMSHOT_STOP_AFTER: testing aid */
 	double save_s;
 	size_t size;            /* of the last checkpoint, bytes */
+	double wall0, cpu0;     /* this process's start (its cost clock) */
+	double wall_before, cpu_before; /* spent before it (a resumed run) */
+	long passes_before;     /* the passes done before it */
 };
 
 static int ck_jwrite(struct ckpt *ck, const void *p, size_t n, dem_error_t *e)
@@ -712,11 +717,13 @@ static uint32_t scene_crc(const dem_scene_t *s)
 }
 
 static int ck_init(struct ckpt *ck, const char *path, const dem_scene_t *s, int forces,
-		   dem_error_t *e)
+		   const dem_cost_t *cost, dem_error_t *e)
 {
 	const char *stop = getenv("DEMSHOT_STOP_AFTER");
 	memset(ck, 0, sizeof *ck);
 	ck->path = path;
+	ck->wall0 = cost->wall0;
+	ck->cpu0 = cost->cpu0;
 	ck->scene_crc = scene_crc(s);
 	ck->forces = forces;
 	ck->stop_after = stop && *stop ? strtol(stop, NULL, 10) : -1;
@@ -761,6 +768,8 @@ static int ck_save(struct ckpt *ck, const dem_fe_t *fe, const struct shotin *in,
 	h.passes = passes;
 	h.jlen = ck->jlen;
 	h.jcrc = (uint32_t)ck->jcrc;
+	h.wall_s = ck->wall_before + dem_wall() - ck->wall0;
+	h.cpu_s = ck->cpu_before + dem_cpu() - ck->cpu0;
 	uint32_t hcrc = (uint32_t)crc32(crc32(0, Z_NULL, 0), (const Bytef *)&h, sizeof h);
 	dem_afile_t af;
 	if (dem_afile_open(&af, ck->path, "wb", e))
@@ -808,8 +817,9 @@ static int ck_resume(struct ckpt *ck, dem_fe_t *fe, struct shotin *in, const dem
 	}
 	if (memcmp(h.magic, ck_magic, sizeof h.magic) || h.version != CK_VERSION) {
 		fclose(f);
-		return dem_error_set(e, DEM_EINPUT, "%s: not a demshot checkpoint (version %d)",
-				     ck->path, CK_VERSION);
+		return dem_error_set(e, DEM_EINPUT, "%s: not a demshot checkpoint of version %d%s",
+				     ck->path, CK_VERSION, memcmp(h.magic, ck_magic, sizeof h.magic) ? ""
+				     : " (an older demshot's: run it again without --resume)");
 	}
 	if (hcrc != (uint32_t)crc32(crc32(0, Z_NULL, 0), (const Bytef *)&h, sizeof h)) {
 		fclose(f);
@@ -898,6 +908,9 @@ static int ck_resume(struct ckpt *ck, dem_fe_t *fe, struct shotin *in, const dem
 		return dem_error_set(e, DEM_EIO, "%s: %s", ck->jpath, strerror(errno));
 	ck->jcrc = c;
 	ck->jlen = len;
+	ck->wall_before = h.wall_s;
+	ck->cpu_before = h.cpu_s;
+	ck->passes_before = (long)h.passes;
 	*passes = (long)h.passes;
 	if (!quiet)
 		fprintf(stderr, "%s: resuming after pass %ld (%lld passes done) at t = %.4g s\n",
@@ -1171,7 +1184,7 @@ static int open_outputs(const struct cmdline *cl, struct job *j, const dem_main_
 	if (!cl->checkpoint)
 		return DEM_OK;
 	j->have_ck = 1;
-	if ((rc = ck_init(&j->ck, cl->checkpoint, j->scene, cl->forces != NULL, e)) ||
+	if ((rc = ck_init(&j->ck, cl->checkpoint, j->scene, cl->forces != NULL, &r->cost, e)) ||
 	    (rc = cl->resume ? ck_resume(&j->ck, j->fe, &j->in, &j->st.mesh, j->w, j->fw, &j->f,
 					 &j->passes, cl->com.quiet, e)
 			     : ck_fresh(&j->ck, e)))
@@ -1208,6 +1221,14 @@ static int run_job(const struct cmdline *cl, struct job *j, dem_cost_t *cost, de
 	if (j->have_ck) {
 		dem_cost_time(cost, "checkpoint", j->ck.save_s);
 		dem_cost_count(cost, "checkpoint_mb", (double)j->ck.size / 1048576);
+		if (j->ck.passes_before > 0) {
+			/* a resumed run: what the whole run spent, this process
+			 * and the ones that wrote its checkpoints (not the work a
+			 * killed process did after its last checkpoint) */
+			dem_cost_count(cost, "resumed_after", (double)j->ck.passes_before);
+			dem_cost_time(cost, "total_wall", j->ck.wall_before + dem_wall() - j->ck.wall0);
+			dem_cost_time(cost, "total_cpu", j->ck.cpu_before + dem_cpu() - j->ck.cpu0);
+		}
 		ck_close(&j->ck, 1);
 		j->have_ck = 0;
 	}

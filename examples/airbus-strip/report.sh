@@ -200,12 +200,15 @@ echo "| v (m/s) | dempack | demshot | demshot per pass | demprofile | demform, e
 echo "|---|---|---|---|---|---|---|"
 for v in $vels; do
 	d=$out/v$v
-	shot=$(cost "$d/demshot.log" demshot wall_s)
+	# a resumed run: the whole run's time (total_wall_s), not the last process's
+	shot=$(cost "$d/demshot.log" demshot total_wall_s)
+	[ -n "$shot" ] || shot=$(cost "$d/demshot.log" demshot wall_s)
 	set -- $(costsum "$d/demform-passes.log" demform wall_s)
 	echo "| $v | $(cost "$d/dempack.log" dempack wall_s) | $shot | $(awk -v s="$shot" -v n="$npass" 'BEGIN { printf "%.1f", s / n }') | $(cost "$d/demprofile.log" demprofile wall_s) | $1 ($2) | $(cost "$d/demform.log" demform wall_s) |"
 done
 echo
-echo "demshot's cost lines (elements, steps, ns per element cycle):"
+echo "demshot's cost lines (elements, steps, ns per element cycle; a resumed run's"
+echo "figures are those of its last process, total_wall_s the whole run's):"
 echo
 for v in $vels; do
 	echo "- v = $v m/s: $(grep '^demshot: cost:' "$out/v$v/demshot.log" | tail -n 1 | sed 's/^demshot: cost: //')"

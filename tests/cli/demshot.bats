@@ -327,6 +327,12 @@ ckpt_setup() {
 	part=$(grep -o 'elem_cycles=[0-9]*' <<< "${stderr_lines[-1]}" | cut -d= -f2)
 	echo "element updates: whole run $full, resumed $part"
 	[ "$part" -gt 0 ] && [ $((3 * part)) -lt $((2 * full)) ]
+	# the cost line: this process's time, and the whole run's with the
+	# killed process's two passes (its checkpoint carries them)
+	[[ ${stderr_lines[-1]} =~ resumed_after=2 ]]
+	awk '{ for (i = 1; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] } }
+	     END { print "wall", v["wall_s"], "total", v["total_wall_s"], "cpu", v["cpu_s"], "total", v["total_cpu_s"]
+		   exit !(v["total_wall_s"] > v["wall_s"] && v["total_cpu_s"] > v["cpu_s"]) }' <<< "${stderr_lines[-1]}"
 	[ "$(state_rows "$T/a.state")" = "$(state_rows "$T/b.state")" ]
 	[ "$(demprofile --pass all "$T/a.state" | grep -v '^#')" = "$(demprofile --pass all "$T/b.state" | grep -v '^#')" ]
 	cmp <(grep -v '^# prog' "$T/fa.txt") <(grep -v '^# prog' "$T/fb.txt")
@@ -402,6 +408,13 @@ ckpt_setup() {
 	[ "$status" -eq 1 ]
 	grep -q "truncated journal" <<< "$stderr"
 	[ ! -e "$T/b.state" ] && [ ! -e "$T/fb.txt" ]
+	# an older demshot's checkpoint (version 1: no time spent in it)
+	cp "$T/ck.good" "$T/ck"
+	printf '\x01' | dd of="$T/ck" bs=1 seek=8 conv=notrunc 2> /dev/null
+	run --separate-stderr demshot -s "$T/shot.yaml" --forces "$T/fb.txt" --checkpoint "$T/ck" --resume -o "$T/b.state" "$T/s3.txt"
+	echo "$stderr"
+	[ "$status" -eq 1 ]
+	grep -q "an older demshot's: run it again without --resume" <<< "$stderr"
 	# not a checkpoint at all
 	cp "$T/s3.txt" "$T/ck"
 	run --separate-stderr demshot -s "$T/shot.yaml" --forces "$T/fb.txt" --checkpoint "$T/ck" --resume -o "$T/b.state" "$T/s3.txt"
