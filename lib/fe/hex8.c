@@ -421,23 +421,25 @@ void dem_hex8_batch_hg(const dem_hex8_batch_t *restrict b, const dem_mat_t *m,
 		/* an increment that loads the stiffness form (raises |Qs|)
 		 * grows on the element's factor, one that unloads it on the
 		 * full stiffness: like plastic loading and elastic unloading,
-		 * so a cycle can only take energy, never give it */
-		double kd[NB], pp[NB] = { 0 }, cw[NB];
-		VSTORE(kd, kdt);
-		VSTORE(cw, cv);
-		for (int i = 0; i < 12; i++)
-			for (int e = 0; e < NB; e++) {
-				double qi = b->q[i][e], inc = kd[e] * qi, qs = Qs[i * NB + e];
-				if (qs * inc > 0)
-					inc *= kscale[e];
-				qs += inc;
-				double qq = qs + cw[e] * qi;
-				Qs[i * NB + e] = qs;
-				Q[i * NB + e] = qq;
-				pp[e] += qq * qi;
-			}
-		for (int e = 0; e < NB; e++)
-			P[e] = pp[e];
+		 * so a cycle can only take energy, never give it.  Lane by
+		 * lane by a mask, not a branch: which lanes load changes from
+		 * mode to mode and step to step, a branch per lane mispredicts */
+		vec ks;
+		const vec zero = { 0 };
+		VLOAD(ks, kscale);
+		for (int i = 0; i < 12; i++) {
+			vec qi, qs;
+			VLOAD(qi, b->q[i]);
+			VLOAD(qs, Qs + i * NB);
+			vec inc = kdt * qi, incs = inc * ks;
+			lvec load = qs * inc > zero;
+			qs += (vec)((load & (lvec)incs) | (~load & (lvec)inc));
+			vec qq = qs + cv * qi;
+			VSTORE(Qs + i * NB, qs);
+			VSTORE(Q + i * NB, qq);
+			p += qq * qi;
+		}
+		VSTORE(P, p);
 		return;
 	}
 	for (int i = 0; i < 12; i++) {

@@ -376,6 +376,43 @@ static void test_batch_kernels(void **state)
 			for (int i = 0; i < 24; i++)
 				assert_true(fabs(f[i][l] - fl[i]) <= 1e-13 * vmax(fl, 24));
 		}
+		/* with a tangent factor per lane: an increment that raises
+		 * |Qs| is scaled by the lane's factor, one that lowers it is
+		 * not; half the modes of each lane start with Qs against the
+		 * increment, so both branches run in every lane */
+		double ksl[NB], Qk[12][NB], Pk[NB], Qsk[12][NB];
+		for (int l = 0; l < NB; l++)
+			ksl[l] = l == 0 ? 0 : l == 1 ? 1 : 0.1 + 0.8 * fabs(urand(&s));
+		for (int k = 0; k < 12; k++)
+			for (int l = 0; l < NB; l++)
+				Qsk[k][l] = (k % 2 ? -1 : 1) * fabs(Qs0[k][l]) * (b.q[k][l] < 0 ? -1 : 1);
+		double Qsk0[12][NB];
+		memcpy(Qsk0, Qsk, sizeof Qsk0);
+		dem_hex8_batch_hg(&b, &mat, 0.05, 0.1, 1e-8, ksl, Qsk[0], Qk[0], Pk);
+		int up = 0, down = 0;
+		for (int l = 0; l < NB; l++) {
+			if (l == badlane)
+				continue;
+			dem_hex8_1pt_t g;
+			assert_int_equal(dem_hex8_1pt_geom(xs[l], &g), DEM_HEX8_OK);
+			dem_hex8_1pt_rate(&g, vs[l]);
+			double ks, cv, pl = 0;
+			dem_hex8_hg_coef(&g, &mat, 0.05, 0.1, &ks, &cv);
+			for (int k = 0; k < 12; k++) {
+				double inc = ks * 1e-8 * g.q[k], qs = Qsk0[k][l];
+				if (qs * inc > 0)
+					inc *= ksl[l], up++;
+				else
+					down++;
+				qs += inc;
+				double qq = qs + cv * g.q[k];
+				pl += qq * g.q[k];
+				assert_true(fabs(Qsk[k][l] - qs) <= 1e-13 * fabs(qs) + 1e-300);
+				assert_true(fabs(Qk[k][l] - qq) <= 1e-13 * vmax(Qk[0], 12 * NB));
+			}
+			assert_true(fabs(Pk[l] - pl) <= 1e-12 * fabs(pl));
+		}
+		assert_true(up > 0 && down > 0);
 	}
 	dem_mat_free(&mat);
 }
