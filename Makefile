@@ -142,7 +142,7 @@ $(FUZZER): $(BUILD)/tests/fuzz/fuzz.o $(LIBDEM)
 # tests/fuzz/corpus, writes tests/fuzz/REPORT.md).  Not part of make deps:
 # it installs afl++ itself when missing (as root).
 FUZZ_TIME    = 600
-FUZZ_TARGETS = stream scene state profile
+FUZZ_TARGETS = stream scene state profile bodies
 fuzz:
 	@sh tests/fuzz/run.sh "$(FUZZ_TIME)" $(FUZZ_TARGETS)
 

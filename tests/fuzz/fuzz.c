@@ -14,6 +14,7 @@
  *   state    the state stream reader (demshot's frames): the mesh and
  *            every frame
  *   profile  the profile stream reader (demprofile's): every pass
+ *   bodies   the body stream reader (demshot's DE-only run): every row
  *
  * `make fuzz` builds it with AFL++ (afl-cc) and runs afl-fuzz on each
  * target with FILE = @@; `make check` builds it with the ordinary compiler
@@ -25,6 +26,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "body/frames.h"
 #include "core/error.h"
 #include "fe/fescene.h"
 #include "fe/material.h"
@@ -103,6 +105,19 @@ static void profile(const char *path)
 	said(&e);
 }
 
+static void bodies(const char *path)
+{
+	dem_error_t e = {0};
+	dem_reader_t *r = NULL;
+	if (dem_bodies_reader_open(&r, path, &e) == DEM_OK) {
+		dem_body_row_t row;
+		while (dem_bodies_reader_next(r, &row, &e) > 0)
+			;
+	}
+	said(&e);
+	dem_reader_close(r);
+}
+
 int main(int argc, char **argv)
 {
 	static const struct {
@@ -110,9 +125,10 @@ int main(int argc, char **argv)
 		void (*run)(const char *);
 	} targets[] = {
 		{"stream", stream}, {"scene", scene}, {"state", state}, {"profile", profile},
+		{"bodies", bodies},
 	};
 	if (argc < 3) {
-		fprintf(stderr, "usage: fuzz stream|scene|state|profile FILE...\n");
+		fprintf(stderr, "usage: fuzz stream|scene|state|profile|bodies FILE...\n");
 		return 2;
 	}
 	verbose = getenv("DEM_FUZZ_VERBOSE") != NULL;
