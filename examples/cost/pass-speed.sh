@@ -1,0 +1,57 @@
+#!/bin/sh
+# pass-speed.sh OUT BASE RUNS - the Ch. 8.6 pass (pass86.yaml, 16 shots
+# on the offset grid, frictionless, 2 threads) by this tree's demshot and
+# by the demshot of the git revision BASE, in turn, RUNS times each, and
+# the same pass on an elastic block (pass86.yaml without its yield and
+# hardening: the elastic cycle, the floor of the element loop).  Issue 17,
+# item 3: a ratio measured in one run, not two figures from two days.
+#
+# BASE is built from `git archive BASE` into OUT/base (its bin/demshot);
+# nothing of this tree is touched.  Rows into OUT/speed.tsv:
+#   build config run wall_s element_loop_s node_loop_s contact_s steps
+#   ns_per_elem_cycle load
+# and each run's state stream as OUT/BUILD-CONFIG.state (the last run's),
+# from which speed-report.sh compares the residual profiles.
+set -eu
+out=$1 base=$2 runs=$3
+top=$(cd ../.. && pwd)
+. ../lib.sh
+mkdir -p "$out"
+
+# the baseline's demshot (built once per revision)
+rev=$(git -C "$top" rev-parse --short "$base")
+if [ ! -x "$out/base-$rev/bin/demshot" ]; then
+	echo "pass-speed: building demshot of $rev into $out/base-$rev" >&2
+	rm -rf "$out/base-$rev"
+	mkdir -p "$out/base-$rev"
+	git -C "$top" archive "$rev" | tar -x -C "$out/base-$rev"
+	make -C "$out/base-$rev" -j2 bin/demshot > "$out/base-$rev.build.log" 2>&1 ||
+		{ tail -20 "$out/base-$rev.build.log" >&2; exit 1; }
+fi
+echo "$rev" > "$out/base.txt"
+
+"$top"/bin/dempack shots --grid 4 --passes 1 --area 5.6mm:5.6mm --speed 46.5 \
+	--shot-radius 0.7mm --seed 1 > "$out/shots.txt" 2> /dev/null
+cp pass86.yaml "$out/plastic.yaml"
+grep -v '^  \(yield\|hardening\):' pass86.yaml > "$out/elastic.yaml"
+grep -q '^  yield:' "$out/elastic.yaml" && { echo "pass-speed: elastic.yaml still yields" >&2; exit 1; }
+
+printf 'build\tconfig\trun\twall_s\telement_loop_s\tnode_loop_s\tcontact_s\tsteps\tns_per_elem_cycle\tload\n' > "$out/speed.tsv"
+r=1
+while [ "$r" -le "$runs" ]; do
+	for config in plastic elastic; do
+		# in turn, so that the load of the moment falls on both alike
+		for build in base new; do
+			prog=$top/bin/demshot
+			[ "$build" = base ] && prog=$out/base-$rev/bin/demshot
+			echo "pass-speed: run $r of $runs: $build $config" >&2
+			load=$(loadavg)
+			"$prog" -s "$out/$config.yaml" --threads 2 -o "$out/$build-$config.state" \
+				"$out/shots.txt" 2> "$out/$build-$config.log"
+			printf '%s\t%s\t%s\t%s\t%s\n' "$build" "$config" "$r" \
+				"$(cost_field "$out/$build-$config.log" wall_s element_loop_s node_loop_s contact_s steps ns_per_elem_cycle)" \
+				"$load" >> "$out/speed.tsv"
+		done
+	done
+	r=$((r + 1))
+done
