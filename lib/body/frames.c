@@ -109,16 +109,18 @@ int dem_bodies_reader_next(dem_reader_t *r, dem_body_row_t *row, dem_error_t *e)
 	int k = dem_reader_next(r, v, e);
 	if (k != 1)
 		return k;
+	/* the shape code is checked as read, before it becomes an int: a u32
+	 * column holds up to 2^32 - 1, which no int does */
+	if (!(v[3] <= DEM_SHAPE_DISK)) {
+		dem_error_set(e, DEM_EINPUT, "%s: shape %.0f: expected 0, 1 or 2", dem_reader_where(r),
+		              v[3]);
+		return -1;
+	}
 	row->frame = (unsigned)v[0], row->t = v[1], row->id = (unsigned)v[2];
 	row->shape = (int)v[3];
 	row->a = v[4], row->b = v[5], row->m = v[6];
 	row->x = v[7], row->y = v[8], row->th = v[9];
 	row->vx = v[10], row->vy = v[11], row->w = v[12];
-	if (row->shape > DEM_SHAPE_DISK) {
-		dem_error_set(e, DEM_EINPUT, "%s: shape %d: expected 0, 1 or 2", dem_reader_where(r),
-		              row->shape);
-		return -1;
-	}
 	return 1;
 }
 

@@ -54,5 +54,5 @@ for t in "$@"; do
 	done
 	[ "$n" -eq 0 ] || echo "fuzz: $t: $n inputs kept in tests/fuzz/corpus/$t"
 done
-sh tests/fuzz/report.sh "$secs" "$@" > tests/fuzz/REPORT.md
+sh tests/fuzz/report.sh "$secs" "$@" > tests/fuzz/REPORT.md.tmp && mv -f tests/fuzz/REPORT.md.tmp tests/fuzz/REPORT.md
 cat tests/fuzz/REPORT.md

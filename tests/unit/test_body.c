@@ -480,6 +480,28 @@ static void test_stream_round_trip(void **state)
 	if (!strstr(e.msg, "expected a body stream"))
 		fprintf(stderr, "# %s\n", e.msg);
 	assert_non_null(strstr(e.msg, "expected a body stream"));
+	/* a shape code beyond the three, up to the largest a u32 column holds
+	 * (found by fuzzing: it was converted to int before it was checked),
+	 * is refused by the row's reader */
+	static const char *const codes[] = {"3", "2147483648", "4294967295"};
+	for (int k = 0; k < 3; k++) {
+		char text[512];
+		snprintf(text, sizeof text, "# dem bodies 1\n# dim 2\n# columns frame:u32:- t:f64:s id:u32:- "
+			 "shape:u32:- a:f64:m b:f64:m m:f64:- x:f64:m y:f64:m theta:f64:rad vx:f64:m/s "
+			 "vy:f64:m/s w:f64:rad/s\n# format text\n# data\n0 0 0 %s 1 1 2 0 0 0 0 0 0\n"
+			 "# end 1\n", codes[k]);
+		write_text(path("s.txt"), text);
+		dem_body_row_t row;
+		memset(&e, 0, sizeof e);
+		assert_int_equal(dem_bodies_reader_open(&r, path("s.txt"), &e), 0);
+		assert_int_equal(dem_bodies_reader_next(r, &row, &e), -1);
+		char want[48];
+		snprintf(want, sizeof want, "shape %s: expected 0, 1 or 2", codes[k]);
+		if (!strstr(e.msg, want))
+			fprintf(stderr, "# %s\n", e.msg);
+		assert_non_null(strstr(e.msg, want));
+		dem_reader_close(r);
+	}
 	/* the VTK polygons: one cell a body and a wall */
 	assert_int_equal(dem_bodies_vtu(path("b.vtu"), &de, &e), 0);
 	FILE *fp = fopen(path("b.vtu"), "r");
