@@ -27,6 +27,7 @@
 #include "core/fmt.h"
 #include "core/radius.h"
 #include "core/rng.h"
+#include "body/frames.h"
 #include "io/scene.h"
 #include "io/stream.h"
 #include "io/vtk.h"
@@ -42,7 +43,7 @@ enum { OPT_DIM = DEM_OPT_PROGRAM, OPT_DENSITY, OPT_LAW, OPT_RMIN, OPT_LAMBDA,
        OPT_PATTERN, OPT_AREA, OPT_GRID, OPT_PASSES, OPT_COVERAGE, OPT_PER_PASS,
        OPT_SEPARATION, OPT_DIMPLE, OPT_SPEED, OPT_ANGLE, OPT_SHOT_RADIUS,
        OPT_BOX, OPT_CYLINDER, OPT_PLANES, OPT_NO_RELAX, OPT_TOLERANCE, OPT_SHAKES, OPT_CONE,
-       OPT_STAGES };
+       OPT_STAGES, OPT_SHAPE, OPT_SIDES, OPT_RATIO_LAW, OPT_RATIO_MIN, OPT_RATIO_MAX };
 
 enum { METHOD_RANDOM, METHOD_FRONT, METHOD_SHOTS, METHOD_COMPRESS };
 static const char *const methods[] = {"random", "front", "shots", "compress", NULL};
@@ -61,6 +62,11 @@ static const dem_opt_t options[] = {
 	{"vtk", OPT_VTK, "FILE", "front, compress: also write the packing to FILE as legacy VTK points with a radius scalar (ParaView)"},
 	{"check-limit", OPT_CHECK_LIMIT, "K", "front: check at most K front disks each way; default 0, no limit"},
 	{"gravity", OPT_GRAVITY, NULL, "front, open form: each disk rests stably under gravity (-y)"},
+	{"shape", OPT_SHAPE, "SHAPE", "front: disk, polygon or ellipse (Ch. 5.3-5.4; a body stream); default disk"},
+	{"sides", OPT_SIDES, "N", "front, polygon: sides of each polygon, 3 to 64; default 6"},
+	{"ratio-law", OPT_RATIO_LAW, "LAW", "front, polygon or ellipse: aspect ratio law (mono, urd, nrd, lnrd); default urd"},
+	{"ratio-min", OPT_RATIO_MIN, "A", "front, polygon or ellipse: smallest aspect ratio a/b, at least 1; default 1"},
+	{"ratio-max", OPT_RATIO_MAX, "A", "front, polygon or ellipse: largest aspect ratio a/b; default the smallest"},
 	{"box", OPT_BOX, "XLO:YLO:ZLO:XHI:YHI:ZHI", "compress: the box to fill (with --planes: their bounding box); default 0:0:0:20:20:20 (m)"},
 	{"cylinder", OPT_CYLINDER, "CX:CY:R:ZLO:ZHI", "compress: fill the cylinder of radius R about the vertical axis (CX, CY) from ZLO to ZHI"},
 	{"planes", OPT_PLANES, "NX:NY:NZ:D[:NX:NY:NZ:D]", "compress: cut the box or cylinder by the half-spaces NX x + NY y + NZ z >= D (a convex polyhedron); 4 numbers a plane"},
@@ -157,6 +163,11 @@ static const struct method_opt {
 	{OPT_POLYGON, M_FRONT, "--polygon", "pack.polygon", 1},
 	{OPT_CHECK_LIMIT, M_FRONT, "--check-limit", "pack.check_limit", 0},
 	{OPT_GRAVITY, M_FRONT, "--gravity", "pack.gravity", 0},
+	{OPT_SHAPE, M_FRONT, "--shape", "pack.shape", 0},
+	{OPT_SIDES, M_FRONT, "--sides", "pack.sides", 0},
+	{OPT_RATIO_LAW, M_FRONT, "--ratio-law", "pack.ratio.law", 0},
+	{OPT_RATIO_MIN, M_FRONT, "--ratio-min", "pack.ratio.min", 0},
+	{OPT_RATIO_MAX, M_FRONT, "--ratio-max", "pack.ratio.max", 0},
 	{OPT_PATTERN, M_SHOTS, "--pattern", "pack.pattern", 0},
 	{OPT_AREA, M_SHOTS, "--area", "pack.area", 1},
 	{OPT_GRID, M_SHOTS, "--grid", "pack.grid", 0},
@@ -170,14 +181,14 @@ static const struct method_opt {
 	{OPT_SHOT_RADIUS, M_SHOTS, "--shot-radius", "shot.radius", 0},
 };
 #define NMETHOD_OPTS (sizeof method_opts / sizeof method_opts[0])
-_Static_assert(NMETHOD_OPTS <= 32, "a bit per method option");
+_Static_assert(NMETHOD_OPTS <= 64, "a bit per method option");
 
 /* Returns -1 to go on, or the exit code (help, version, usage error). */
 static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 {
 	dem_cli_t c;
 	dem_common_t *com = &cl->com;
-	unsigned long given = 0;        /* bit i: method_opts[i] was typed */
+	unsigned long long given = 0;   /* bit i: method_opts[i] was typed */
 	int k;
 
 	memset(cl, 0, sizeof *cl);
@@ -197,7 +208,7 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 			const struct method_opt *o = &method_opts[i];
 			if (k != o->key)
 				continue;
-			given |= 1UL << i;
+			given |= 1ULL << i;
 			if (!optarg)    /* a flag; --no-relax turns a key off */
 				dem_common_override(com, o->scene_key,
 						    k == OPT_NO_RELAX ? "false" : "true", o->name);
@@ -324,6 +335,27 @@ static int read_front(dem_scene_t *s, dem_front_spec_t *fp, dem_error_t *e)
 	if (fp->gravity && form != DEM_FRONT_OPEN)
 		return dem_scene_error(s, "pack.gravity", e,
 				       "gravity needs the open form (Ch. 5.2.3)");
+	int shape, rlaw;
+	long sides;
+	double amin, amax;
+	if (dem_scene_choice(s, "pack.shape", dem_front_shape_names, DEM_FRONT_DISK, &shape, e) ||
+	    dem_scene_int(s, "pack.sides", 6, 3, 64, &sides, e) ||
+	    dem_scene_choice(s, "pack.ratio.law", dem_radius_names, DEM_RADIUS_URD, &rlaw, e) ||
+	    dem_scene_quantity(s, "pack.ratio.min", DEM_DIM_NONE, 1, 1, 1e6, &amin, e) ||
+	    dem_scene_quantity(s, "pack.ratio.max", DEM_DIM_NONE, amin, 1, 1e6, &amax, e))
+		return e->code;
+	static const char *const body_keys[] = {"pack.sides", "pack.ratio", NULL};
+	for (int k = 0; body_keys[k]; k++)
+		if (dem_scene_has(s, body_keys[k]) &&
+		    (shape == DEM_FRONT_DISK || (k == 0 && shape != DEM_FRONT_POLYGON)))
+			return dem_scene_error(s, body_keys[k], e, "not read with pack.shape %s",
+					       dem_front_shape_names[shape]);
+	if (amax < amin)
+		return dem_scene_error(s, "pack.ratio.max", e, "expected at least pack.ratio.min (%g)", amin);
+	fp->shape = (dem_front_shape_t)shape;
+	fp->sides = (int)sides;
+	if (shape != DEM_FRONT_DISK)
+		fp->ratio = (dem_radius_law_t){(dem_radius_kind_t)rlaw, amin, amax};
 	fp->form = (dem_front_form_t)form;
 	fp->lo[0] = dom[0];
 	fp->lo[1] = dom[1];
@@ -573,6 +605,9 @@ struct front_out {
 	double t_packed;        /* when the packing was done (cost line) */
 	const char *vtk_path;   /* --vtk, or NULL */
 	dem_vtk_t *vtk;
+	dem_front_shape_t shape; /* bodies: their shape, sides and count */
+	int sides;
+	size_t id;
 };
 
 static int front_open(struct front_out *o)
@@ -605,6 +640,20 @@ static int front_emit(void *ctx, const double *x, double r)
 	return dem_writer_row(o->w, row, o->e);
 }
 
+static int front_emit_body(void *ctx, const dem_front_body_t *b)
+{
+	struct front_out *o = ctx;
+	int rc;
+
+	if (!o->w && (rc = front_open(o)))
+		return rc;
+	dem_body_row_t row = {0, (unsigned)o->id++, o->shape == DEM_FRONT_POLYGON ? DEM_SHAPE_POLYGON
+						   : DEM_SHAPE_SUPERQUADRIC,
+			      0, b->a, b->b, o->shape == DEM_FRONT_POLYGON ? o->sides : 2,
+			      b->x[0], b->x[1], b->theta, 0, 0, 0};
+	return dem_bodies_write_row(o->w, &row, o->e);
+}
+
 /* Pack by the advancing front and write the kept disks; h has the common
  * lines already. */
 static int write_front(const dem_front_spec_t *fp, const struct cmdline *cl,
@@ -619,6 +668,17 @@ static int write_front(const dem_front_spec_t *fp, const struct cmdline *cl,
 	dem_header_add(h, "method", "front form=%s law=%s rmin=%s lambda=%s check_limit=%d gravity=%s",
 		       dem_front_form_names[fp->form], dem_radius_names[fp->law.kind], rmin,
 		       lambda, fp->check_limit, fp->gravity ? "true" : "false");
+	if (fp->shape != DEM_FRONT_DISK) {
+		if (cl->vtk)
+			return dem_error_set(e, DEM_EINPUT, "--vtk: disks only (a body stream "
+					     "is drawn by its rows, dem-streams(5))");
+		char amin[32], amax[32];
+		dem_fmt_double(amin, fp->ratio.rmin);
+		dem_fmt_double(amax, fp->ratio.rmax);
+		dem_header_add(h, "bodies", "shape=%s sides=%d ratio_law=%s ratio_min=%s ratio_max=%s",
+			       dem_front_shape_names[fp->shape], fp->shape == DEM_FRONT_POLYGON ? fp->sides : 0,
+			       dem_radius_names[fp->ratio.kind], amin, amax);
+	}
 	if (fp->polygon) {
 		/* the vertices as given, x1 y1 x2 y2 ... */
 		size_t cap = (size_t)fp->npolygon * 2 * 26 + 1, len = 0;
@@ -645,9 +705,10 @@ static int write_front(const dem_front_spec_t *fp, const struct cmdline *cl,
 		return dem_error_nomem(e, "random generator");
 	struct front_out o = {NULL, h, &st, cl->com.output,
 			      (cl->com.binary ? DEM_STREAM_BINARY : 0) | (cl->com.gzip ? DEM_STREAM_GZIP : 0), e, 0,
-			      cl->vtk, NULL};
+			      cl->vtk, NULL, fp->shape, fp->sides, 0};
 	double t0 = dem_wall();
-	rc = dem_pack_front(fp, rng, front_emit, &o, &st, e);
+	rc = fp->shape == DEM_FRONT_DISK ? dem_pack_front(fp, rng, front_emit, &o, &st, e)
+					 : dem_pack_front_bodies(fp, rng, front_emit_body, &o, &st, e);
 	gsl_rng_free(rng);
 	if (rc == DEM_OK && !o.w)
 		rc = front_open(&o);
@@ -670,6 +731,15 @@ static int write_front(const dem_front_spec_t *fp, const struct cmdline *cl,
 	dem_cost_count(cost, "placed", (double)st.placed);
 	dem_cost_count(cost, "density", st.density);
 	dem_cost_count(cost, "failed", (double)st.failed);
+	if (fp->shape == DEM_FRONT_ELLIPSE) {
+		/* Newton on the loci (Ch. 5.4): solves, steps, refused, and
+		 * the positions taken from the outer bounds instead */
+		dem_cost_count(cost, "newton", (double)st.newton);
+		dem_cost_count(cost, "newton_steps", (double)st.newton_iters);
+		dem_cost_count(cost, "newton_refused", (double)st.newton_failed);
+		dem_cost_count(cost, "fallbacks", (double)st.fallbacks);
+		dem_cost_count(cost, "pw_evals", (double)st.overlap_evals);
+	}
 	return DEM_OK;
 }
 
@@ -954,6 +1024,31 @@ static void particle_header(const struct cmdline *cl, struct job *j, const dem_m
 {
 	const char *axes[] = {"x", "y", "z"};
 	int dim = j->method == METHOD_FRONT ? 2 : j->method == METHOD_COMPRESS ? 3 : j->sp.dim;
+
+	if (j->method == METHOD_FRONT && j->fp.shape != DEM_FRONT_DISK) {
+		/* a body stream; its walls the domain's edges, anticlockwise
+		 * (bodies on their left), as thick as the largest body */
+		const dem_front_spec_t *f = &j->fp;
+		double rect[8] = {f->lo[0], f->lo[1], f->hi[0], f->lo[1], f->hi[0], f->hi[1], f->lo[0], f->hi[1]};
+		const double *v = f->polygon ? f->polygon : rect;
+		int n = f->polygon ? f->npolygon : 4;
+		double a2 = 0, t = 2 * f->law.rmax * sqrt(f->ratio.rmax);
+		for (int k = 0; k < n; k++)
+			a2 += v[2 * k] * v[2 * ((k + 1) % n) + 1] - v[2 * k + 1] * v[2 * ((k + 1) % n)];
+		double (*wall)[5] = malloc((size_t)n * sizeof *wall);
+		for (int k = 0; wall && k < n; k++) {
+			int i = a2 > 0 ? k : n - 1 - k, i1 = a2 > 0 ? (k + 1) % n : (2 * n - 2 - k) % n;
+			wall[k][0] = v[2 * i], wall[k][1] = v[2 * i + 1];
+			wall[k][2] = v[2 * i1], wall[k][3] = v[2 * i1 + 1];
+			wall[k][4] = t;
+		}
+		/* (without memory the header is short: the writer then fails) */
+		dem_bodies_header(&j->h, wall ? (size_t)n : 0, (const double (*)[5])wall);
+		free(wall);
+		dem_header_add_provenance(&j->h, PROG, r->argc, r->args, 1, cl->com.seed);
+		dem_header_add(&j->h, "seed", "%lu", cl->com.seed);
+		return;
+	}
 
 	dem_header_init(&j->h, "particles", 1, dim);
 	for (int d = 0; d < dim; d++)

@@ -67,13 +67,16 @@ int dem_shape_init(dem_shape_t *s, int kind, double a, double b, double m, doubl
 		int n = (int)m;
 		if (!(s->v = malloc((size_t)n * sizeof *s->v)))
 			return dem_error_nomem(e, "polygon");
-		/* one side flat at the bottom */
+		/* one side flat at the bottom; b > 0 stretches it along y
+		 * (the points on the ellipse of semi-axes a, b) */
+		if (!(b > 0) || !isfinite(b))
+			b = a;
 		for (int k = 0; k < n; k++) {
 			double phi = -0.5 * DEM_PI + DEM_PI / n + 2 * DEM_PI * k / n;
-			s->v[k][0] = a * cos(phi), s->v[k][1] = a * sin(phi);
+			s->v[k][0] = a * cos(phi), s->v[k][1] = b * sin(phi);
 		}
 		s->nv = n;
-		s->a = a, s->b = a, s->m = m;
+		s->a = a, s->b = b, s->m = m;
 		shape_finish(s);
 		return DEM_OK;
 	}

@@ -10,6 +10,8 @@
  *                 agree);
  *   polygon       the regular polygon of m sides (3 <= m <= 64) with
  *                 circumradius a, one side flat at the bottom at theta = 0;
+ *                 with b > 0 (b != a) stretched along y to b: its points
+ *                 (a cos p, b sin p) on the ellipse of semi-axes a, b;
  *   disk          the circle of radius a, in contact exactly: the overlap
  *                 of two disks is their lens, of a disk and a wall the
  *                 circle's part inside the wall's rectangle (its ends
@@ -85,7 +87,8 @@ int dem_shape_kind_parse(const char *name);
 
 typedef struct dem_shape {
 	int kind;
-	double a, b, m;   /* superquadric: a, b, m; polygon: a (circumradius), m sides, b = a;
+	double a, b, m;   /* superquadric: a, b, m; polygon: a (circumradius), m sides, b (a if
+	                     none given: regular);
 	                     disk: a (radius), b = a, m = 0 */
 	int nv;           /* points of the polygon (0 for a disk) */
 	double (*v)[2];   /* the polygon, anticlockwise, centroid at 0 (owned) */

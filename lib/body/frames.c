@@ -33,26 +33,49 @@ static const struct {
 	{"w", DEM_F64, "rad/s", {0, 0, -1, 1, 0}},   /* angular velocity */
 };
 
+int dem_bodies_header(dem_header_t *h, size_t nw, const double (*wall)[5])
+{
+	int rc = DEM_OK;
+	dem_header_init(h, "bodies", 1, 2);
+	for (int k = 0; k < NCOL && !rc; k++)
+		rc = dem_header_add_col(h, cols[k].name, cols[k].type, cols[k].unit);
+	if (!rc)
+		rc = dem_header_add(h, "shapes", "superquadric polygon disk");
+	for (size_t k = 0; k < nw && !rc; k++) {
+		char b[5][32];
+		for (int i = 0; i < 5; i++)
+			dem_fmt_double(b[i], wall[k][i]);
+		rc = dem_header_add(h, "wall", "%s %s %s %s %s", b[0], b[1], b[2], b[3], b[4]);
+	}
+	return rc;
+}
+
+int dem_bodies_write_row(dem_writer_t *w, const dem_body_row_t *r, dem_error_t *e)
+{
+	double v[NCOL] = {r->frame, r->t, r->id, r->shape, r->a, r->b, r->m,
+	                  r->x, r->y, r->th, r->vx, r->vy, r->w};
+	return dem_writer_row(w, v, e);
+}
+
 int dem_bodies_writer_open(dem_writer_t **w, const char *path, const dem_de_t *de,
                            const char *prog, int argc, char **argv, int has_seed,
                            unsigned long seed, int flags, dem_error_t *e)
 {
 	dem_header_t h;
+	double (*wall)[5] = malloc((de->nw ? de->nw : 1) * sizeof *wall);
 	int rc = DEM_OK;
-	dem_header_init(&h, "bodies", 1, 2);
-	for (int k = 0; k < NCOL && !rc; k++)
-		rc = dem_header_add_col(&h, cols[k].name, cols[k].type, cols[k].unit);
-	if (!rc)
-		rc = dem_header_add_provenance(&h, prog, argc, argv, has_seed, seed) ||
-		     dem_header_add(&h, "shapes", "superquadric polygon disk");
-	for (size_t k = 0; k < de->nw && !rc; k++) {
+	if (!wall)
+		return dem_error_nomem(e, "body stream header");
+	for (size_t k = 0; k < de->nw; k++) {
 		const double (*q)[2] = (const double (*)[2])de->wall[k];
-		char b[5][32];
-		dem_fmt_double(b[0], q[1][0]), dem_fmt_double(b[1], q[1][1]);
-		dem_fmt_double(b[2], q[0][0]), dem_fmt_double(b[3], q[0][1]);
-		dem_fmt_double(b[4], hypot(q[2][0] - q[1][0], q[2][1] - q[1][1]));
-		rc = dem_header_add(&h, "wall", "%s %s %s %s %s", b[0], b[1], b[2], b[3], b[4]);
+		wall[k][0] = q[1][0], wall[k][1] = q[1][1];
+		wall[k][2] = q[0][0], wall[k][3] = q[0][1];
+		wall[k][4] = hypot(q[2][0] - q[1][0], q[2][1] - q[1][1]);
 	}
+	rc = dem_bodies_header(&h, de->nw, (const double (*)[5])wall);
+	free(wall);
+	if (!rc)
+		rc = dem_header_add_provenance(&h, prog, argc, argv, has_seed, seed);
 	if (rc)
 		rc = dem_error_nomem(e, "body stream header");
 	else

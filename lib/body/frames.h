@@ -15,8 +15,8 @@
  *     # end ROWS
  *
  * shape 0: superquadric |x/a|^m + |y/b|^m = 1; 1: the regular polygon of
- * m sides with circumradius a (b = a), a side flat at the bottom at
- * theta = 0; 2: the disk of radius a (b = a, m = 0).  (x, y) is the
+ * m sides with circumradius a, a side flat at the bottom at theta = 0,
+ * stretched along y to b (its points (a cos p, b sin p); b = a: regular); 2: the disk of radius a (b = a, m = 0).  (x, y) is the
  * centroid, theta the rotation about it (anticlockwise).  Frames are
  * numbered from 0 (the start); rows of a frame are in body order.
  */
@@ -26,22 +26,31 @@
 #include "body/body.h"
 #include "io/stream.h"
 
-/* Open the stream at path (NULL or "-": standard output) for the bodies
- * and walls of de, with this program's provenance; flags as
- * dem_writer_open. */
-int dem_bodies_writer_open(dem_writer_t **w, const char *path, const dem_de_t *de,
-                           const char *prog, int argc, char **argv, int has_seed,
-                           unsigned long seed, int flags, dem_error_t *e);
-/* Write the bodies' rows of frame number frame at de->t. */
-int dem_bodies_write_frame(dem_writer_t *w, const dem_de_t *de, unsigned frame,
-                           dem_error_t *e);
-
 /* One row of a body stream, in SI units. */
 typedef struct dem_body_row {
 	unsigned frame, id;
 	int shape;
 	double t, a, b, m, x, y, th, vx, vy, w;
 } dem_body_row_t;
+
+/* Open the stream at path (NULL or "-": standard output) for the bodies
+ * and walls of de, with this program's provenance; flags as
+ * dem_writer_open. */
+int dem_bodies_writer_open(dem_writer_t **w, const char *path, const dem_de_t *de,
+                           const char *prog, int argc, char **argv, int has_seed,
+                           unsigned long seed, int flags, dem_error_t *e);
+/* The header of a body stream with nw walls, each A x, A y, B x, B y,
+ * thickness (m): kind, columns, shape names, walls; the caller adds its
+ * provenance and lines.  Nonzero without memory. */
+int dem_bodies_header(dem_header_t *h, size_t nw, const double (*wall)[5]);
+
+/* Write one row (all its fields). */
+int dem_bodies_write_row(dem_writer_t *w, const dem_body_row_t *row, dem_error_t *e);
+
+/* Write the bodies' rows of frame number frame at de->t. */
+int dem_bodies_write_frame(dem_writer_t *w, const dem_de_t *de, unsigned frame,
+                           dem_error_t *e);
+
 
 /* Open a body stream (NULL or "-": standard input): DEM_EINPUT for
  * another kind or missing columns. */

@@ -57,8 +57,10 @@
 #include <string.h>
 
 #include "core/consts.h"
+#include "pack/locus.h"
 
 const char *const dem_front_form_names[] = {"closed", "open", NULL};
+const char *const dem_front_shape_names[] = {"disk", "polygon", "ellipse", NULL};
 
 enum { NIL = -1, OFF = -2 };    /* link at an open end; node not on the front */
 
@@ -71,6 +73,15 @@ enum { NIL = -1, OFF = -2 };    /* link at an open end; node not on the front */
 #define MAXDROPS 16
 /* Largest grid, in cells (4 bytes each). */
 #define MAXCELLS (1L << 28)
+/* Most sides of a polygon; its locus has at most twice as many points. */
+#define MAXSIDES 64
+/* Ellipses: the levels of the outer bounds of the loci (Ch. 5.4), and
+ * Newton's steps at each. */
+#define NLEVEL 3
+static const int levels[NLEVEL] = {16, 64, 256};
+#define NEWTON_MAXIT 30
+/* Crossings of two loci kept, at most. */
+#define MAXCROSS 16
 
 enum { PLACED, FAIL, UNSTABLE_FWD, UNSTABLE_BWD };
 
@@ -117,6 +128,22 @@ struct packer {
 
 	int *ov;                /* objects overlapping the current candidate */
 	int nov, ovcap;
+
+	/* polygons and ellipses (shape != DEM_FRONT_DISK): r[] is then each
+	 * body's bounding radius, and */
+	dem_front_shape_t shape;
+	int m;                  /* polygon sides */
+	double tc[MAXSIDES], ts[MAXSIDES];  /* the unit m-gon, flat side down */
+	double *ea, *eb, *ec, *es;  /* semi-axes, cos and sin of the rotation */
+	double rb;              /* the largest bounding radius */
+	struct {                /* the body being placed */
+		double a, b, c, s, r, size;
+		double mat[3];          /* ellipse: its shape matrix */
+		double v[MAXSIDES][2];  /* polygon: its points about the centre */
+	} W;
+	double cpx[2];          /* x of the contacts with c and n found by the
+				 * last tangent (gravity) */
+	double (*buf)[2];       /* room for the loci: 4 x (2 MAXSIDES + levels) */
 };
 
 /* ---- storage ---------------------------------------------------------- */
@@ -148,7 +175,11 @@ static int reserve(struct packer *p, int need)
 	    grow((void **)&p->hit, cap, sizeof *p->hit) ||
 	    grow((void **)&p->tag, cap, sizeof *p->tag) ||
 	    grow((void **)&p->cnext, cap, sizeof *p->cnext) ||
-	    (p->gravity && grow((void **)&p->sup, 2 * cap, sizeof *p->sup)))
+	    (p->gravity && grow((void **)&p->sup, 2 * cap, sizeof *p->sup)) ||
+	    (p->shape && (grow((void **)&p->ea, cap, sizeof *p->ea) ||
+			  grow((void **)&p->eb, cap, sizeof *p->eb) ||
+			  grow((void **)&p->ec, cap, sizeof *p->ec) ||
+			  grow((void **)&p->es, cap, sizeof *p->es))))
 		return -1;
 	p->cap = (int)cap;
 	return 0;
@@ -170,6 +201,11 @@ static void release(struct packer *p)
 	free(p->ov);
 	free(p->w);
 	free(p->poly);
+	free(p->ea);
+	free(p->eb);
+	free(p->ec);
+	free(p->es);
+	free(p->buf);
 }
 
 /* ---- grid ------------------------------------------------------------- */
@@ -230,6 +266,421 @@ static int ov_push(struct packer *p, int j)
 	return 0;
 }
 
+/* ---- polygons and ellipses (Ch. 5.3-5.4) ------------------------------ */
+
+/* Room in buf: two loci of LOCMAX points and their parts, then scratch. */
+#define LOCMAX 256
+#define BUFPTS (4 * LOCMAX + 6 * MAXSIDES)
+
+enum { LOC_LINE, LOC_POLY, LOC_CURVE };
+
+/* The locus of the body being placed round one object: a line n . y = d
+ * (a wall), a convex polygon (polygons: the Minkowski sum; ellipses: the
+ * outer bound of the curve L, K points an angle du apart). */
+struct loc {
+	int kind, obj;
+	double n[2], d;
+	int nv;
+	double (*v)[2];         /* the polygon (absolute) */
+	double (*pa)[2];        /* polygons: each point's part from the object */
+	double du;
+	dem_locus_t L;          /* ellipses: the exact locus for Newton */
+};
+
+/* A crossing of two loci: the point, and for a polygon the edge and the
+ * fraction along it. */
+struct cross {
+	double x[2];
+	int ia, ib;
+	double sa, sb;
+};
+
+static double body_size(const struct packer *p, int j)
+{
+	return sqrt(p->ea[j] * p->eb[j]);
+}
+
+/* The points of the polygon of semi-axes a, b turned by (c, s), about its
+ * centre: the unit m-gon stretched, then turned. */
+static void body_polygon(const struct packer *p, double a, double b, double c, double s,
+			 double (*v)[2])
+{
+	for (int k = 0; k < p->m; k++) {
+		double x = a * p->tc[k], y = b * p->ts[k];
+		v[k][0] = c * x - s * y;
+		v[k][1] = s * x + c * y;
+	}
+}
+
+/* The support function of the body being placed in the unit direction
+ * (dx, dy), and (sp, may be NULL) a support point about its centre. */
+static double w_support(const struct packer *p, double dx, double dy, double sp[2])
+{
+	if (p->shape == DEM_FRONT_ELLIPSE) {
+		double n[2] = {dx, dy};
+		return dem_ellipse_support(p->W.mat, n, sp);
+	}
+	int best = 0;
+	double h = -HUGE_VAL;
+	for (int k = 0; k < p->m; k++) {
+		double t = dx * p->W.v[k][0] + dy * p->W.v[k][1];
+		if (t > h) {
+			h = t;
+			best = k;
+		}
+	}
+	if (sp) {
+		sp[0] = p->W.v[best][0];
+		sp[1] = p->W.v[best][1];
+	}
+	return h;
+}
+
+/* Where the body placed at (px, py) touches the line of wall k. */
+static void wall_touch(const struct packer *p, int k, double px, double py, double *tx, double *ty)
+{
+	double sp[2];
+	w_support(p, -p->w[k].nx, -p->w[k].ny, sp);
+	*tx = px + sp[0];
+	*ty = py + sp[1];
+}
+
+/* -W: the body being placed turned through 180 degrees (still
+ * anticlockwise), into v. */
+static void w_negated(const struct packer *p, double (*v)[2])
+{
+	for (int k = 0; k < p->m; k++) {
+		v[k][0] = -p->W.v[k][0];
+		v[k][1] = -p->W.v[k][1];
+	}
+}
+
+/* Does the body being placed, at (px, py), overlap body or reflex vertex
+ * j by more than TOUCH of the smaller size?  (Its bounding circle meets
+ * j's.) */
+static int shape_overlap(struct packer *p, int j, double px, double py)
+{
+	double dx = px - p->x[j], dy = py - p->y[j];
+	if (p->shape == DEM_FRONT_ELLIPSE) {
+		double lim = (1 - TOUCH) * (1 - TOUCH);
+		const double *m = p->W.mat;
+		if (j < p->nfix) {      /* the vertex inside the ellipse */
+			double det = m[0] * m[2] - m[1] * m[1];
+			double q = (m[2] * dx * dx - 2 * m[1] * dx * dy + m[0] * dy * dy) / det;
+			return q < lim;
+		}
+		/* the inscribed circles overlap: so do the ellipses */
+		if (hypot(dx, dy) < (1 - TOUCH) * (p->W.b + p->eb[j]))
+			return 1;
+		double mj[3], d[2] = {dx, dy};
+		dem_ellipse_matrix(p->ea[j], p->eb[j], p->ec[j], p->es[j], mj);
+		return dem_ellipse_pw(mj, m, d, lim, &p->st->overlap_evals) < lim;
+	}
+	double q[2] = {dx, dy};
+	if (j < p->nfix) {      /* the vertex inside W, deeper than TOUCH */
+		q[0] = -dx, q[1] = -dy;
+		return dem_convex_depth(p->m, (const double (*)[2])p->W.v, q) > TOUCH * p->W.size;
+	}
+	double (*P)[2] = p->buf + 4 * LOCMAX, (*N)[2] = P + MAXSIDES, (*S)[2] = N + MAXSIDES;
+	body_polygon(p, p->ea[j], p->eb[j], p->ec[j], p->es[j], P);
+	w_negated(p, N);
+	int ns = dem_minkowski(p->m, (const double (*)[2])P, p->m, (const double (*)[2])N, S, NULL);
+	return dem_convex_depth(ns, (const double (*)[2])S, q) > TOUCH * fmin(p->W.size, body_size(p, j));
+}
+
+/* Does the body being placed, at (px, py), cross wall k by more than tol
+ * (a length)?  A rectangle's wall is a line, a polygon's edge a segment. */
+static int shape_wall_overlap(struct packer *p, int k, double px, double py, double tol)
+{
+	const struct wall *w = &p->w[k];
+	if (!w->seg)
+		return (px - w->qx) * w->nx + (py - w->qy) * w->ny - w_support(p, -w->nx, -w->ny, NULL) < -tol;
+	if (p->shape == DEM_FRONT_ELLIPSE) {
+		/* the segment in the frame where the ellipse is the unit
+		 * circle; there a depth tol is at least tol / a */
+		double u[2][2], c = p->W.c, s = p->W.s;
+		const double e[2][2] = {{w->qx - px, w->qy - py}, {w->ex - px, w->ey - py}};
+		for (int i = 0; i < 2; i++) {
+			u[i][0] = (c * e[i][0] + s * e[i][1]) / p->W.a;
+			u[i][1] = (-s * e[i][0] + c * e[i][1]) / p->W.b;
+		}
+		double dx = u[1][0] - u[0][0], dy = u[1][1] - u[0][1];
+		double t = -(u[0][0] * dx + u[0][1] * dy) / (dx * dx + dy * dy);
+		t = t < 0 ? 0 : t > 1 ? 1 : t;
+		return hypot(u[0][0] + t * dx, u[0][1] + t * dy) < 1 - tol / p->W.a;
+	}
+	double (*G)[2] = p->buf + 4 * LOCMAX, (*N)[2] = G + MAXSIDES, (*S)[2] = N + MAXSIDES;
+	G[0][0] = w->qx, G[0][1] = w->qy, G[1][0] = w->ex, G[1][1] = w->ey;
+	w_negated(p, N);
+	int ns = dem_minkowski(2, (const double (*)[2])G, p->m, (const double (*)[2])N, S, NULL);
+	double q[2] = {px, py};
+	return dem_convex_depth(ns, (const double (*)[2])S, q) > tol;
+}
+
+/* The locus of the body being placed round object k (K: the ellipses'
+ * level), its points in v and pa (room for LOCMAX each). */
+static void make_locus(const struct packer *p, int k, int K, struct loc *L, double (*v)[2],
+		       double (*pa)[2])
+{
+	L->obj = k;
+	L->v = v;
+	L->pa = pa;
+	memset(&L->L, 0, sizeof L->L);
+	if (k < p->nw) {
+		const struct wall *w = &p->w[k];
+		double h = w_support(p, -w->nx, -w->ny, NULL);
+		L->kind = LOC_LINE;
+		L->n[0] = w->nx, L->n[1] = w->ny;
+		L->d = w->qx * w->nx + w->qy * w->ny + h;
+		L->L.line = 1;
+		L->L.c[0] = w->qx + h * w->nx, L->L.c[1] = w->qy + h * w->ny;
+		L->L.t[0] = -w->ny, L->L.t[1] = w->nx;
+		return;
+	}
+	if (p->shape == DEM_FRONT_ELLIPSE) {
+		L->kind = LOC_CURVE;
+		L->L.c[0] = p->x[k], L->L.c[1] = p->y[k];
+		if (k >= p->nfix)
+			dem_ellipse_matrix(p->ea[k], p->eb[k], p->ec[k], p->es[k], L->L.m1);
+		memcpy(L->L.m2, p->W.mat, sizeof L->L.m2);
+		L->nv = K;
+		L->du = 2 * DEM_PI / K;
+		dem_locus_outer(&L->L, K, v);
+		return;
+	}
+	L->kind = LOC_POLY;
+	double (*N)[2] = p->buf + 4 * LOCMAX, (*P)[2] = N + MAXSIDES;
+	w_negated(p, N);
+	if (k < p->nfix) {      /* a reflex vertex: -W about it */
+		double o[1][2] = {{0, 0}};
+		L->nv = dem_minkowski(1, (const double (*)[2])o, p->m, (const double (*)[2])N, v, pa);
+	} else {
+		body_polygon(p, p->ea[k], p->eb[k], p->ec[k], p->es[k], P);
+		L->nv = dem_minkowski(p->m, (const double (*)[2])P, p->m, (const double (*)[2])N, v, pa);
+	}
+	for (int i = 0; i < L->nv; i++)
+		v[i][0] += p->x[k], v[i][1] += p->y[k];
+}
+
+/* The crossings of a line (n . y = d) with the polygon L; each edge
+ * counts its first point, not its last.  side: which of ia/ib is the
+ * polygon's edge. */
+static int cross_line_poly(const double n[2], double d, const struct loc *L, int side,
+			   struct cross *out, int k)
+{
+	for (int i = 0; i < L->nv && k < MAXCROSS; i++) {
+		const double *a = L->v[i], *b = L->v[(i + 1) % L->nv];
+		double s0 = n[0] * a[0] + n[1] * a[1] - d, s1 = n[0] * b[0] + n[1] * b[1] - d;
+		if (!((s0 <= 0 && s1 > 0) || (s0 > 0 && s1 <= 0)))
+			continue;
+		double t = s0 / (s0 - s1);
+		struct cross *c = &out[k++];
+		c->x[0] = a[0] + t * (b[0] - a[0]);
+		c->x[1] = a[1] + t * (b[1] - a[1]);
+		c->ia = side ? -1 : i, c->sa = t;
+		c->ib = side ? i : -1, c->sb = t;
+	}
+	return k;
+}
+
+/* The crossings of the loci A and B (at most MAXCROSS). */
+static int cross_loci(const struct loc *A, const struct loc *B, struct cross *out)
+{
+	if (A->kind == LOC_LINE && B->kind == LOC_LINE) {
+		double det = A->n[0] * B->n[1] - A->n[1] * B->n[0];
+		if (fabs(det) < 1e-12)
+			return 0;
+		out[0].x[0] = (A->d * B->n[1] - B->d * A->n[1]) / det;
+		out[0].x[1] = (A->n[0] * B->d - B->n[0] * A->d) / det;
+		out[0].ia = out[0].ib = -1;
+		return 1;
+	}
+	if (A->kind == LOC_LINE)
+		return cross_line_poly(A->n, A->d, B, 1, out, 0);
+	if (B->kind == LOC_LINE)
+		return cross_line_poly(B->n, B->d, A, 0, out, 0);
+	/* two convex polygons: every pair of edges whose boxes meet */
+	double blo[2] = {HUGE_VAL, HUGE_VAL}, bhi[2] = {-HUGE_VAL, -HUGE_VAL};
+	for (int j = 0; j < B->nv; j++)
+		for (int d = 0; d < 2; d++) {
+			blo[d] = fmin(blo[d], B->v[j][d]);
+			bhi[d] = fmax(bhi[d], B->v[j][d]);
+		}
+	int k = 0;
+	for (int i = 0; i < A->nv && k < MAXCROSS; i++) {
+		const double *a0 = A->v[i], *a1 = A->v[(i + 1) % A->nv];
+		if (fmax(a0[0], a1[0]) < blo[0] || fmin(a0[0], a1[0]) > bhi[0] ||
+		    fmax(a0[1], a1[1]) < blo[1] || fmin(a0[1], a1[1]) > bhi[1])
+			continue;
+		double rx = a1[0] - a0[0], ry = a1[1] - a0[1];
+		for (int j = 0; j < B->nv && k < MAXCROSS; j++) {
+			const double *b0 = B->v[j], *b1 = B->v[(j + 1) % B->nv];
+			if (fmax(a0[0], a1[0]) < fmin(b0[0], b1[0]) || fmin(a0[0], a1[0]) > fmax(b0[0], b1[0]) ||
+			    fmax(a0[1], a1[1]) < fmin(b0[1], b1[1]) || fmin(a0[1], a1[1]) > fmax(b0[1], b1[1]))
+				continue;
+			double sx = b1[0] - b0[0], sy = b1[1] - b0[1];
+			double den = rx * sy - ry * sx;
+			if (den == 0)
+				continue;
+			double qx = b0[0] - a0[0], qy = b0[1] - a0[1];
+			double t = (qx * sy - qy * sx) / den, u = (qx * ry - qy * rx) / den;
+			if (!(t >= 0 && t < 1 && u >= 0 && u < 1))
+				continue;
+			struct cross *c = &out[k++];
+			c->x[0] = a0[0] + t * rx;
+			c->x[1] = a0[1] + t * ry;
+			c->ia = i, c->sa = t, c->ib = j, c->sb = u;
+		}
+	}
+	return k;
+}
+
+/* The x of the contact with a body's locus at a crossing on its edge i at
+ * fraction s (polygons). */
+static double contact_poly(const struct packer *p, const struct loc *L, int i, double s)
+{
+	const double *a = L->pa[i], *b = L->pa[(i + 1) % L->nv];
+	return p->x[L->obj] + a[0] + s * (b[0] - a[0]);
+}
+
+/* ... and on an ellipse's curve at the normal angle u. */
+static double contact_curve(const struct packer *p, const struct loc *L, double u)
+{
+	double n[2] = {cos(u), sin(u)}, sp[2] = {0, 0};
+	if (L->obj >= p->nfix)
+		dem_ellipse_support(L->L.m1, n, sp);
+	return p->x[L->obj] + sp[0];
+}
+
+/* The Newton start on locus L from a crossing on its edge i at s. */
+static double start_param(const struct loc *L, int i, double s, const double x[2])
+{
+	if (L->kind == LOC_LINE)
+		return (x[0] - L->L.c[0]) * L->L.t[0] + (x[1] - L->L.c[1]) * L->L.t[1];
+	return (i + 0.5 + s) * L->du;
+}
+
+/* The centre of the body being placed touching objects a and b, on the
+ * left of a -> b (Fig. 5.14(b), Fig. 5.16(b)): of the crossings of the
+ * two loci, the one furthest to the left of the direction from a to b
+ * (from a wall, its normal; to a wall, minus its normal).  Returns 0 when
+ * the loci do not cross.  Sets cpx, the contacts' x (gravity). */
+static int shape_tangent(struct packer *p, int a, int b, double *px, double *py)
+{
+	struct loc A, B;
+	struct cross c[MAXCROSS];
+	double dir[2];
+	if (a < p->nw)
+		dir[0] = p->w[a].nx, dir[1] = p->w[a].ny;
+	else if (b < p->nw)
+		dir[0] = -p->w[b].nx, dir[1] = -p->w[b].ny;
+	else
+		dir[0] = p->x[b] - p->x[a], dir[1] = p->y[b] - p->y[a];
+	int nlev = p->shape == DEM_FRONT_ELLIPSE ? NLEVEL : 1;
+	for (int lev = 0; lev < nlev; lev++) {
+		make_locus(p, a, levels[lev], &A, p->buf, p->buf + LOCMAX);
+		make_locus(p, b, levels[lev], &B, p->buf + 2 * LOCMAX, p->buf + 3 * LOCMAX);
+		int nc = cross_loci(&A, &B, c), best = -1;
+		double sbest = -HUGE_VAL;
+		for (int k = 0; k < nc; k++) {
+			double sc = dir[0] * c[k].x[1] - dir[1] * c[k].x[0];
+			if (sc > sbest) {
+				sbest = sc;
+				best = k;
+			}
+		}
+		if (best < 0)
+			return 0;       /* the (outer bounds of the) loci do not cross */
+		const struct cross *x0 = &c[best];
+		if (p->shape == DEM_FRONT_POLYGON || (A.kind == LOC_LINE && B.kind == LOC_LINE)) {
+			*px = x0->x[0];
+			*py = x0->x[1];
+			p->cpx[0] = A.kind == LOC_POLY ? contact_poly(p, &A, x0->ia, x0->sa) : *px;
+			p->cpx[1] = B.kind == LOC_POLY ? contact_poly(p, &B, x0->ib, x0->sb) : *px;
+			return 1;
+		}
+		/* ellipses: Newton from the crossing of the outer bounds */
+		double u = start_param(&A, x0->ia, x0->sa, x0->x);
+		double v = start_param(&B, x0->ib, x0->sb, x0->x);
+		double tol = 1e-13 * p->W.size + 8 * DBL_EPSILON * (fabs(x0->x[0]) + fabs(x0->x[1]));
+		p->st->newton++;
+		int it = dem_locus_meet(&A.L, &B.L, &u, &v, tol, NEWTON_MAXIT);
+		double x[2];
+		int ok = it >= 0;
+		if (ok) {
+			p->st->newton_iters += (size_t)it;
+			dem_locus_eval(&A.L, u, x, NULL);
+			double d0 = hypot(x[0] - x0->x[0], x[1] - x0->x[1]);
+			ok = d0 <= p->W.r;
+			for (int k = 0; k < nc && ok; k++)
+				if (k != best && hypot(x[0] - c[k].x[0], x[1] - c[k].x[1]) < d0)
+					ok = 0;
+		} else {
+			p->st->newton_iters += NEWTON_MAXIT;
+		}
+		if (ok) {
+			*px = x[0];
+			*py = x[1];
+			p->cpx[0] = A.kind == LOC_CURVE ? contact_curve(p, &A, u) : *px;
+			p->cpx[1] = B.kind == LOC_CURVE ? contact_curve(p, &B, v) : *px;
+			return 1;
+		}
+		p->st->newton_failed++;
+		if (lev == nlev - 1) {
+			/* fall-back: the crossing of the outer bounds, outside
+			 * both loci, so overlapping neither */
+			p->st->fallbacks++;
+			*px = x0->x[0];
+			*py = x0->x[1];
+			u = start_param(&A, x0->ia, x0->sa, x0->x);
+			v = start_param(&B, x0->ib, x0->sb, x0->x);
+			p->cpx[0] = A.kind == LOC_CURVE ? contact_curve(p, &A, u) : *px;
+			p->cpx[1] = B.kind == LOC_CURVE ? contact_curve(p, &B, v) : *px;
+			return 1;
+		}
+	}
+	return 0;
+}
+
+/* Is the body being placed, at (px, py), wholly inside the domain, to
+ * tol (a length)? */
+static int shape_inside(struct packer *p, double px, double py, double tol)
+{
+	if (p->poly) {
+		if (!in_polygon(p->poly, p->npoly, px, py))
+			return 0;
+		for (int k = 0; k < p->nw; k++)
+			if (shape_wall_overlap(p, k, px, py, tol))
+				return 0;
+		return 1;
+	}
+	const dem_front_spec_t *s = p->s;
+	for (int d = 0; d < 2; d++) {
+		double v = d ? py : px;
+		double hlo = w_support(p, d ? 0 : -1, d ? -1 : 0, NULL);
+		double hhi = w_support(p, d ? 0 : 1, d ? 1 : 0, NULL);
+		if (v - hlo < s->lo[d] - tol || v + hhi > s->hi[d] + tol)
+			return 0;
+	}
+	return 1;
+}
+
+/* Make the body of semi-axes a, b turned by (c, s) the one being placed. */
+static void set_w(struct packer *p, double a, double b, double c, double s)
+{
+	p->W.a = a, p->W.b = b, p->W.c = c, p->W.s = s;
+	p->W.size = sqrt(a * b);
+	if (p->shape == DEM_FRONT_ELLIPSE) {
+		dem_ellipse_matrix(a, b, c, s, p->W.mat);
+		p->W.r = a;
+	} else {
+		body_polygon(p, a, b, c, s, p->W.v);
+		p->W.r = 0;
+		for (int k = 0; k < p->m; k++)
+			p->W.r = fmax(p->W.r, hypot(p->W.v[k][0], p->W.v[k][1]));
+	}
+}
+
 /* Collect into ov every object that the disk (px, py, r) overlaps; return
  * how many of them are on the front, or -1 without memory. */
 static int collect(struct packer *p, double px, double py, double r)
@@ -251,7 +702,9 @@ static int collect(struct packer *p, double px, double py, double r)
 				/* a reflex vertex (rj = 0) takes the disk's own
 				 * tolerance, so a disk touching it is no overlap */
 				double d = r + rj - TOUCH * (rj > 0 && rj < r ? rj : r);
-				if (dx * dx + dy * dy < d * d) {
+				if (p->shape ? dx * dx + dy * dy < (r + rj) * (r + rj) &&
+					       shape_overlap(p, j, px, py)
+					     : dx * dx + dy * dy < d * d) {
 					if (ov_push(p, j))
 						return -1;
 					onfront += p->next[j] != OFF;
@@ -259,8 +712,9 @@ static int collect(struct packer *p, double px, double py, double r)
 			}
 	for (int k = 0; k < p->nw; k++) {
 		const struct wall *w = &p->w[k];
-		if (w->seg ? seg_dist(w, px, py) < r * (1 - TOUCH)
-			   : (px - w->qx) * w->nx + (py - w->qy) * w->ny < r * (1 - TOUCH)) {
+		if (p->shape ? shape_wall_overlap(p, k, px, py, TOUCH * p->W.size)
+		    : w->seg ? seg_dist(w, px, py) < r * (1 - TOUCH)
+			     : (px - w->qx) * w->nx + (py - w->qy) * w->ny < r * (1 - TOUCH)) {
 			if (ov_push(p, k))
 				return -1;
 			onfront += p->next[k] != OFF;
@@ -274,9 +728,11 @@ static int collect(struct packer *p, double px, double py, double r)
 /* The centre of a disk of radius r touching objects a and b, on the left
  * of a -> b (Fig. 5.5, step 1).  Returns 0 when there is none (the two are
  * too far apart, or two parallel walls). */
-static int tangent(const struct packer *p, int a, int b, double r,
+static int tangent(struct packer *p, int a, int b, double r,
 		   double *px, double *py)
 {
+	if (p->shape)
+		return shape_tangent(p, a, b, px, py);
 	if (a >= p->nw && b >= p->nw) {
 		/* two circles of radii ra + r and rb + r about the centres */
 		double dx = p->x[b] - p->x[a], dy = p->y[b] - p->y[a];
@@ -412,6 +868,12 @@ static int add_disk(struct packer *p, double x, double y, double r)
 	p->x[i] = x;
 	p->y[i] = y;
 	p->r[i] = r;
+	if (p->shape) {
+		p->ea[i] = p->W.a;
+		p->eb[i] = p->W.b;
+		p->ec[i] = p->W.c;
+		p->es[i] = p->W.s;
+	}
 	p->prev[i] = p->next[i] = OFF;
 	p->live[i] = 0;
 	p->hit[i] = 0;
@@ -511,6 +973,11 @@ static int stability(const struct packer *p, int c, int n, double px, double py)
 	double a, b;
 	support_point(p, c, px, py, &a);
 	support_point(p, n, px, py, &b);
+	/* a body's support is where it touches (the last tangent's) */
+	if (p->shape && c >= p->nw)
+		a = p->cpx[0];
+	if (p->shape && n >= p->nw)
+		b = p->cpx[1];
 	if (px < a)
 		return UNSTABLE_BWD;
 	if (px > b)
@@ -551,7 +1018,10 @@ static int attempt(struct packer *p, int *pc, int *pn, double r, int *pi)
 			int k = c < p->nw ? c : n < p->nw ? n : NIL, v = NIL;
 			if (k != NIL) {
 				const struct wall *w = &p->w[k];
-				double t = (px - w->qx) * (w->ex - w->qx) + (py - w->qy) * (w->ey - w->qy);
+				double tx = px, ty = py;        /* where it touches */
+				if (p->shape)
+					wall_touch(p, k, px, py, &tx, &ty);
+				double t = (tx - w->qx) * (w->ex - w->qx) + (ty - w->qy) * (w->ey - w->qy);
 				double l2 = (w->ex - w->qx) * (w->ex - w->qx) + (w->ey - w->qy) * (w->ey - w->qy);
 				v = t < 0 ? w->pq : t > l2 ? w->pe : NIL;
 			}
@@ -647,7 +1117,14 @@ static double new_radius(struct packer *p, gsl_rng *rng)
 		memset(p->tag, 0, (size_t)p->n * sizeof *p->tag);
 		p->radial = 1;
 	}
-	return dem_radius_draw(&p->s->law, rng);
+	double r = dem_radius_draw(&p->s->law, rng);
+	if (!p->shape)
+		return r;
+	/* a body: its aspect ratio and rotation drawn after its size */
+	double al = p->s->ratio.rmin > 0 ? dem_radius_draw(&p->s->ratio, rng) : 1;
+	double th = gsl_rng_uniform(rng) * (p->shape == DEM_FRONT_ELLIPSE ? DEM_PI : 2 * DEM_PI);
+	set_w(p, r * sqrt(al), r / sqrt(al), cos(th), sin(th));
+	return p->W.r;
 }
 
 /* ---- the two initial fronts ------------------------------------------- */
@@ -657,14 +1134,36 @@ static double new_radius(struct packer *p, gsl_rng *rng)
 static int start_closed(struct packer *p, gsl_rng *rng, int *seg)
 {
 	const dem_front_spec_t *s = p->s;
-	double r1 = new_radius(p, rng), r2 = new_radius(p, rng), r3 = new_radius(p, rng);
-	int d1 = add_disk(p, 0, 0, r1), d2, d3;
-	if (d1 < 0 || (d2 = add_disk(p, r1 + r2, 0, r2)) < 0)
-		return -1;
+	int d1, d2, d3;
 	double x3, y3;
-	tangent(p, d2, d1, r3, &x3, &y3);       /* below D1 -> D2 */
-	if ((d3 = add_disk(p, x3, y3, r3)) < 0)
-		return -1;
+	if (p->shape) {
+		/* D2 touching D1 on its right: the ray from D1's centre
+		 * leaves D1's locus once (it is convex), found by bisection */
+		double r1 = new_radius(p, rng);
+		if ((d1 = add_disk(p, 0, 0, r1)) < 0)
+			return -1;
+		double r2 = new_radius(p, rng), lo = 0, hi = r1 + r2;
+		for (int k = 0; k < 200 && hi - lo > 1e-15 * hi; k++) {
+			double mid = 0.5 * (lo + hi);
+			if (shape_overlap(p, d1, mid, 0))
+				lo = mid;
+			else
+				hi = mid;
+		}
+		if ((d2 = add_disk(p, hi, 0, r2)) < 0)
+			return -1;
+		double r3 = new_radius(p, rng);
+		if (!tangent(p, d2, d1, r3, &x3, &y3) || (d3 = add_disk(p, x3, y3, r3)) < 0)
+			return -1;
+	} else {
+		double r1 = new_radius(p, rng), r2 = new_radius(p, rng), r3 = new_radius(p, rng);
+		d1 = add_disk(p, 0, 0, r1);
+		if (d1 < 0 || (d2 = add_disk(p, r1 + r2, 0, r2)) < 0)
+			return -1;
+		tangent(p, d2, d1, r3, &x3, &y3);       /* below D1 -> D2 */
+		if ((d3 = add_disk(p, x3, y3, r3)) < 0)
+			return -1;
+	}
 	/* move the triangle's centroid to the centre; the grid is rebuilt */
 	double cx = (p->x[d1] + p->x[d2] + p->x[d3]) / 3;
 	double cy = (p->y[d1] + p->y[d2] + p->y[d3]) / 3;
@@ -859,10 +1358,16 @@ static int advance(struct packer *p, gsl_rng *rng, int seg)
 
 /* Wholly inside the rectangle, to TOUCH of the radius and the rounding of
  * the coordinates (a disk touching a wall sits at lo + r, rounded). */
-static int inside(const struct packer *p, int i)
+static int inside(struct packer *p, int i)
 {
 	const dem_front_spec_t *s = p->s;
 	double r = p->r[i];
+	if (p->shape) {
+		double big = fmax(fmax(fabs(p->lo[0]), fabs(p->hi[0])),
+				  fmax(fabs(p->lo[1]), fabs(p->hi[1])));
+		set_w(p, p->ea[i], p->eb[i], p->ec[i], p->es[i]);
+		return shape_inside(p, p->x[i], p->y[i], TOUCH * p->W.size + 4 * DBL_EPSILON * (big + r));
+	}
 	if (p->poly) {
 		/* the centre inside, every edge at least r away (to TOUCH and
 		 * the rounding of coordinates of the bounding box's size) */
@@ -983,6 +1488,18 @@ static int check_spec(const dem_front_spec_t *s, dem_error_t *e)
 	if (s->check_limit < 0)
 		return dem_error_set(e, DEM_EINPUT,
 				     "advancing front: check limit %d is negative", s->check_limit);
+	if (s->shape != DEM_FRONT_DISK && s->shape != DEM_FRONT_POLYGON &&
+	    s->shape != DEM_FRONT_ELLIPSE)
+		return dem_error_set(e, DEM_EINPUT, "advancing front: unknown shape %d", (int)s->shape);
+	if (s->shape == DEM_FRONT_POLYGON && !(s->sides >= 3 && s->sides <= MAXSIDES))
+		return dem_error_set(e, DEM_EINPUT,
+				     "advancing front: a polygon of %d sides: expected 3 to %d",
+				     s->sides, MAXSIDES);
+	if (s->shape != DEM_FRONT_DISK && (s->ratio.rmin != 0 || s->ratio.rmax != 0) &&
+	    !(s->ratio.rmin >= 1 && isfinite(s->ratio.rmax) && s->ratio.rmax >= s->ratio.rmin))
+		return dem_error_set(e, DEM_EINPUT,
+				     "advancing front: aspect ratios must satisfy 1 <= min <= max (got %g, %g)",
+				     s->ratio.rmin, s->ratio.rmax);
 	return DEM_OK;
 }
 
@@ -991,13 +1508,13 @@ static int check_spec(const dem_front_spec_t *s, dem_error_t *e)
 static int make_grid(struct packer *p, dem_error_t *e)
 {
 	const dem_front_spec_t *s = p->s;
-	double cs = 2 * s->law.rmax, m = 2 * cs;
+	double cs = 2 * (p->shape ? p->rb : s->law.rmax), m = 2 * cs;
 	double nx = ceil((p->hi[0] - p->lo[0] + 2 * m) / cs);
 	double ny = ceil((p->hi[1] - p->lo[1] + 2 * m) / cs);
 	if (!(nx * ny <= (double)MAXCELLS))
 		return dem_error_set(e, DEM_EIO,
 				     "advancing front: the domain holds too many disks of radius %g "
-				     "(%.3g grid cells; at most %ld)", s->law.rmax, nx * ny, MAXCELLS);
+				     "(%.3g grid cells; at most %ld)", cs / 2, nx * ny, MAXCELLS);
 	p->gnx = (int)nx;
 	p->gny = (int)ny;
 	p->gx = p->lo[0] - m;
@@ -1052,9 +1569,16 @@ static int setup_domain(struct packer *p)
 	return 0;
 }
 
-int dem_pack_front(const dem_front_spec_t *s, gsl_rng *rng,
-		   dem_front_emit_fn emit, void *ctx, dem_front_stats_t *st,
-		   dem_error_t *e)
+static double body_area(const struct packer *p, int i)
+{
+	if (!p->shape)
+		return DEM_PI * p->r[i] * p->r[i];
+	double ab = p->ea[i] * p->eb[i];
+	return p->shape == DEM_FRONT_ELLIPSE ? DEM_PI * ab : ab * 0.5 * p->m * sin(2 * DEM_PI / p->m);
+}
+
+static int pack(const dem_front_spec_t *s, gsl_rng *rng, dem_front_emit_fn emit,
+		dem_front_body_fn emit_body, void *ctx, dem_front_stats_t *st, dem_error_t *e)
 {
 	struct packer pk = {0}, *p = &pk;
 	dem_front_stats_t st0;
@@ -1072,6 +1596,20 @@ int dem_pack_front(const dem_front_spec_t *s, gsl_rng *rng,
 	p->limit = s->check_limit > 0 ? s->check_limit : LONG_MAX;
 	p->fhead = p->ftail = NIL;
 	p->serial = p->radial = 0;
+	p->shape = s->shape;
+	if (p->shape) {
+		p->m = s->sides;
+		for (int k = 0; k < p->m; k++) {    /* a side flat at the bottom */
+			double phi = -0.5 * DEM_PI + DEM_PI / p->m + 2 * DEM_PI * k / p->m;
+			p->tc[k] = cos(phi);
+			p->ts[k] = sin(phi);
+		}
+		p->rb = s->law.rmax * (s->ratio.rmin > 0 ? sqrt(s->ratio.rmax) : 1);
+		if (!(p->buf = malloc(BUFPTS * sizeof *p->buf))) {
+			rc = dem_error_nomem(e, "advancing front loci");
+			goto out;
+		}
+	}
 	if (setup_domain(p)) {
 		rc = dem_error_nomem(e, "advancing front walls");
 		goto out;
@@ -1125,7 +1663,7 @@ int dem_pack_front(const dem_front_spec_t *s, gsl_rng *rng,
 		keep[i] = (unsigned char)k;
 		if (k) {
 			st->kept++;
-			st->area += DEM_PI * p->r[i] * p->r[i];
+			st->area += body_area(p, i);
 		}
 	}
 	st->density = st->area / p->area;
@@ -1133,9 +1671,35 @@ int dem_pack_front(const dem_front_spec_t *s, gsl_rng *rng,
 	for (int i = p->nfix; i < p->n && rc == DEM_OK; i++)
 		if (keep[i]) {
 			double c[2] = {p->x[i], p->y[i]};
-			rc = emit(ctx, c, p->r[i]);
+			if (emit)
+				rc = emit(ctx, c, p->r[i]);
+			else if (p->shape) {
+				dem_front_body_t b = {{c[0], c[1]}, p->ea[i], p->eb[i],
+						      atan2(p->es[i], p->ec[i])};
+				rc = emit_body(ctx, &b);
+			} else {
+				dem_front_body_t b = {{c[0], c[1]}, p->r[i], p->r[i], 0};
+				rc = emit_body(ctx, &b);
+			}
 		}
 out:
 	release(p);
 	return rc;
+}
+
+int dem_pack_front(const dem_front_spec_t *s, gsl_rng *rng,
+		   dem_front_emit_fn emit, void *ctx, dem_front_stats_t *st,
+		   dem_error_t *e)
+{
+	if (s->shape != DEM_FRONT_DISK)
+		return dem_error_set(e, DEM_EINPUT, "advancing front: %s bodies are written "
+				     "by dem_pack_front_bodies", s->shape == DEM_FRONT_POLYGON ? "polygon" : "other");
+	return pack(s, rng, emit, NULL, ctx, st, e);
+}
+
+int dem_pack_front_bodies(const dem_front_spec_t *s, gsl_rng *rng,
+			  dem_front_body_fn emit, void *ctx, dem_front_stats_t *st,
+			  dem_error_t *e)
+{
+	return pack(s, rng, NULL, emit, ctx, st, e);
 }

@@ -27,6 +27,29 @@
  * The walls are held as lines (a point and an inward normal), and a disk
  * touching a wall is found as a disk touching a line.
  *
+ * Polygons and ellipses (Ch. 5.3-5.4): the same front, forms, domains and
+ * gravity rule with convex bodies placed by translation only, each drawn
+ * with a size r (the radius law), an aspect ratio alpha >= 1 (a law of
+ * the same kinds) and a uniform random rotation theta, with semi-axes
+ * a = r sqrt(alpha), b = r / sqrt(alpha) (so a b = r^2):
+ *   polygon  the m-gon with its points on the ellipse (a, b), a side flat
+ *            at the bottom before the rotation: the regular polygon of
+ *            circumradius r stretched (the body stream's shape 1);
+ *   ellipse  the ellipse (a, b) (the body stream's shape 0 with m = 2).
+ * A new body touching two front objects is where its loci round them
+ * cross (lib/pack/locus.h): for polygons the Minkowski sums, exactly; for
+ * ellipses the tangent-line polygons that bound the loci from outside
+ * (16, 64 and 256 sides, the hierarchy), whose crossing starts Newton's
+ * method on the curves.  Newton's root is taken when it converges within
+ * the body's bounding radius of the start and nearer to it than to any
+ * other crossing of the bounds; otherwise the next level is tried, and
+ * after the last the crossing of the outer bounds itself is taken (a
+ * fall-back: the body then touches neither exactly but overlaps neither,
+ * as the bounds lie outside the loci).  Overlap: polygons by the depth of
+ * the centre in the Minkowski sum (the tolerance 1e-10 of the smaller
+ * size), ellipses by the Perram-Wertheim function (overlap when below
+ * (1 - 1e-10)^2), each after the bounding circles.
+ *
  * Polygons (open form, Ch. 5.2.4, Figs. 5.12-5.13): every edge is a wall,
  * checked as a segment; the front starts as the chain of edges from the
  * one after the lid (the edge whose midpoint is highest) round to the one
@@ -54,6 +77,13 @@ typedef enum dem_front_form {
 /* NULL-terminated names in enum order: "closed", "open". */
 extern const char *const dem_front_form_names[];
 
+typedef enum dem_front_shape {
+	DEM_FRONT_DISK, DEM_FRONT_POLYGON, DEM_FRONT_ELLIPSE
+} dem_front_shape_t;
+
+/* NULL-terminated names in enum order: "disk", "polygon", "ellipse". */
+extern const char *const dem_front_shape_names[];
+
 typedef struct dem_front_spec {
 	dem_front_form_t form;
 	double lo[2], hi[2];    /* the rectangle [lo0, hi0] x [lo1, hi1] */
@@ -67,6 +97,10 @@ typedef struct dem_front_spec {
 				 * of a simple polygon, either orientation;
 				 * NULL: the rectangle lo, hi (then ignored) */
 	int npolygon;
+	dem_front_shape_t shape;  /* DEM_FRONT_DISK (0) unless set */
+	int sides;              /* polygon: 3 to 64 */
+	dem_radius_law_t ratio; /* polygon, ellipse: the aspect ratio law,
+				 * 1 <= rmin <= rmax; all zero: alpha = 1 */
 } dem_front_spec_t;
 
 typedef struct dem_front_stats {
@@ -85,7 +119,24 @@ typedef struct dem_front_stats {
 	size_t dropped;         /* radii that no segment could seat stably;
 				 * 16 in a row end the packing */
 	size_t front_max;       /* the largest front, in disks and walls */
+	/* ellipses: the contact position by Newton's method */
+	size_t newton;          /* solves started (one per level tried) */
+	size_t newton_iters;    /* their steps */
+	size_t newton_failed;   /* solves refused (not converged, or the
+				 * root outside the bounds' neighbourhood) */
+	size_t fallbacks;       /* positions taken from the outer bounds
+				 * after the last level's solve failed */
+	long overlap_evals;     /* Perram-Wertheim evaluations */
 } dem_front_stats_t;
+
+/* A body placed (polygon or ellipse): centre, semi-axes, rotation (rad,
+ * anticlockwise). */
+typedef struct dem_front_body {
+	double x[2];
+	double a, b, theta;
+} dem_front_body_t;
+
+typedef int (*dem_front_body_fn)(void *ctx, const dem_front_body_t *b);
 
 /* Called for each kept disk in the order of generation: centre x[2],
  * radius r.  Nonzero stops the emission and is returned. */
@@ -108,5 +159,12 @@ int dem_front_polygon_check(const double *v, int n, dem_error_t *e);
 int dem_pack_front(const dem_front_spec_t *s, gsl_rng *rng,
 		   dem_front_emit_fn emit, void *ctx, dem_front_stats_t *st,
 		   dem_error_t *e);
+
+/* The same for any shape: each kept body to emit (a disk with a = b = r,
+ * theta = 0).  DEM_EINPUT also for a polygon of other than 3 to 64 sides
+ * or an aspect ratio law not 1 <= rmin <= rmax. */
+int dem_pack_front_bodies(const dem_front_spec_t *s, gsl_rng *rng,
+			  dem_front_body_fn emit, void *ctx, dem_front_stats_t *st,
+			  dem_error_t *e);
 
 #endif
