@@ -5,6 +5,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "contact/gauss.h"
 #include "contact/vec3.h"
 #include "core/consts.h"
 
@@ -270,16 +271,6 @@ int dem_facet_geom(const double O[3], double R, const double X[3][3], int scheme
 }
 
 /* ---- The potential scheme (facet.h) ------------------------------------- */
-
-/* Gauss-Legendre, 8 points on [0, 1] */
-static const double gl_t[8] = {
-	0.019855071751231856, 0.10166676129318664, 0.2372337950418355, 0.4082826787521751,
-	0.5917173212478249, 0.7627662049581645, 0.8983332387068134, 0.9801449282487681,
-};
-static const double gl_w[8] = {
-	0.05061426814518813, 0.11119051722668724, 0.15685332293894363, 0.18134189168918100,
-	0.18134189168918100, 0.15685332293894363, 0.11119051722668724, 0.05061426814518813,
-};
 
 /* The branch of the law, F(g) = c g^m for g > 0, g = R' - q the overlap of
  * a point at distance q from O with the branch's sphere of radius R'. */

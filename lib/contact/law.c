@@ -21,6 +21,13 @@ static double powm(double m, double x)
 
 int dem_law_init(dem_law_t *law, double alpha, double E, double m, dem_error_t *e)
 {
+	return dem_law_init_dim(law, alpha, E, m, 3, e);
+}
+
+int dem_law_init_dim(dem_law_t *law, double alpha, double E, double m, int dim, dem_error_t *e)
+{
+	if (dim != 2 && dim != 3)
+		return dem_error_set(e, DEM_EINPUT, "contact law: dimension %d: expected 2 or 3", dim);
 	if (!(alpha > 0) || !isfinite(alpha))
 		return dem_error_set(e, DEM_EINPUT, "contact law: penalty alpha = %g: expected a finite number > 0 (Eq. 3.45)", alpha);
 	if (!(E > 0) || !isfinite(E))
@@ -29,7 +36,32 @@ int dem_law_init(dem_law_t *law, double alpha, double E, double m, dem_error_t *
 		return dem_error_set(e, DEM_EINPUT, "contact law: exponent m = %g: expected 1 <= m <= 4 (1 linear, 1.5 Hertz, 2 Winkler)", m);
 	law->m = m;
 	law->coef = alpha * E;
+	law->dim = dim;
 	return DEM_OK;
+}
+
+double dem_law_ghertz2d_beta(double nu)
+{
+	double r = DEM_PI * (1 - 2 * nu) / (2 * (1 - nu));  /* k4/k3, rigid disk (G2 infinite) */
+	return DEM_PI / 4 * (1 + r * r) / (2 * (1 - nu * nu));  /* Eq. 3.31 */
+}
+
+int dem_law_ghertz2d(dem_law_t *law, double E, double nu, dem_error_t *e)
+{
+	if (!(nu > -1 && nu <= 0.5))
+		return dem_error_set(e, DEM_EINPUT, "generalised Hertz 2D law: Poisson's ratio nu = %g: "
+		                     "expected -1 < nu <= 0.5", nu);
+	return dem_law_init_dim(law, 2 * dem_law_ghertz2d_beta(nu), E, 1, 2, e);  /* Eq. 3.43 */
+}
+
+double dem_law_winkler2d_alpha(double kw, double E, double R)
+{
+	return 4 * sqrt(2.0) * kw * R / (3 * E);  /* Eq. 3.39 in the form of Eq. 3.45 */
+}
+
+double dem_law_alpha_thesis2d(double alpha_t, double m, double R)
+{
+	return alpha_t * pow(R / 1e-3, 2 * m - 2);
 }
 
 int dem_law_hertz(dem_law_t *law, double E, double nu, dem_error_t *e)
@@ -40,6 +72,7 @@ int dem_law_hertz(dem_law_t *law, double E, double nu, dem_error_t *e)
 		return dem_error_set(e, DEM_EINPUT, "Hertz law: Poisson's ratio nu = %g: expected -1 < nu < 0.5", nu);
 	law->m = 1.5;
 	law->coef = 4.0 / 3.0 * E / (1 - nu * nu);  /* Eq. 3.29 */
+	law->dim = 3;
 	return DEM_OK;
 }
 
@@ -59,6 +92,15 @@ double dem_law_reff(double R1, double R2)
 double dem_law_kn(const dem_law_t *law, double R)
 {
 	double m = law->m;
+	if (law->dim == 2) {  /* R^(1-m): a force per unit thickness */
+		if (m == 1.0)
+			return law->coef;
+		if (m == 1.5)
+			return law->coef / sqrt(R);
+		if (m == 2.0)
+			return law->coef / R;
+		return law->coef * pow(R, 1 - m);
+	}
 	if (m == 1.0)
 		return law->coef * R;
 	if (m == 1.5)

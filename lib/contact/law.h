@@ -23,6 +23,28 @@
  * sphere/sphere contact.  A driver computes k_n once per sphere
  * (dem_law_kn) and keeps it.
  *
+ * Two dimensions (Ch. 3.2.1, 3.3, Table 3.1).  The same law object with
+ * dim = 2 is a disk's law per unit thickness: F in N/m, M in kg/m, and the
+ * radius exponent that keeps alpha dimensionless is then R^(1-m) (E
+ * R^(1-m) delta^m is Pa m = N/m for every m).  For m = 1 this is Eq. 3.45
+ * as printed, F = alpha E delta.  For m = 3/2 the thesis's R^(1/2) makes
+ * E R^(1/2) delta^(3/2) a force, not a force per length, so its alpha is
+ * silently per unit length (per mm, the unit of Ch. 7.4): the thesis's 2D
+ * Hertz law in mm equals ours with alpha = alpha_thesis (R / 1 mm)^(2m-2),
+ * 20 alpha_thesis for the 20 mm disk of Ch. 7.4 (dem_law_alpha_thesis2d).
+ * The
+ * three 2D laws of Ch. 3.3 in this one form:
+ *   linear         F = alpha E delta                          (Eq. 3.25)
+ *   generalised Hertz (Poritsky), rigid disk on an elastic segment:
+ *                  F = beta E b^2 / R ~ 2 beta E delta         (Eqs. 3.30-3.32)
+ *                  i.e. m = 1, alpha = 2 beta(nu)             (Eq. 3.43)
+ *   Winkler        F = k_w S ~ 4/3 sqrt(2R) k_w delta^(3/2)   (Eqs. 3.34, 3.39)
+ *                  i.e. m = 3/2, alpha = 4 sqrt(2) k_w R / (3 E)
+ *                  for a foundation stiffness k_w (Pa/m)
+ * (the closed forms b^2 / R and S hold for any overlap; the power forms
+ * are their small-overlap limits, Eq. 3.1, to relative order delta/R).
+ * dim = 0 counts as 3, so a zero-initialised law is a 3D one.
+ *
  * The time step (Box 3.1, Eqs. 3.80-3.83): dt = lambda 2 sqrt(M / K_L(u))
  * with the secant stiffness K_L(u) = k_n (u_max^m - u^m) / (u_max - u) and
  * u_max the overlap at which the kinetic energy is used up (Eq. 3.81).
@@ -44,12 +66,39 @@
 
 typedef struct dem_law {
 	double m;     /* exponent of the overlap, in [1, 4] */
-	double coef;  /* k_n = coef R^(2-m): alpha E (Eq. 3.45) or 4/3 E* (Eq. 3.28) */
+	double coef;  /* k_n = coef R^(dim-1-m): alpha E (Eq. 3.45) or 4/3 E* (Eq. 3.28) */
+	int dim;      /* 3 (or 0): spheres, F in N; 2: disks, F per unit thickness (N/m) */
 } dem_law_t;
 
 /* Eq. 3.45 in 3D: F = alpha E R^(2-m) delta^m (see above).  alpha > 0 dimensionless, E > 0
  * (Pa), 1 <= m <= 4.  DEM_EINPUT with a message when out of range. */
 int dem_law_init(dem_law_t *law, double alpha, double E, double m, dem_error_t *e);
+
+/* The same in dim = 2 or 3 dimensions: in 2D F = alpha E R^(1-m) delta^m
+ * per unit thickness (above).  DEM_EINPUT for another dim. */
+int dem_law_init_dim(dem_law_t *law, double alpha, double E, double m, int dim, dem_error_t *e);
+
+/* The generalised Hertz law of a rigid disk on an elastic segment
+ * (Poritsky; Eqs. 3.30-3.32): beta(nu) of Eq. 3.31,
+ *   beta = pi/4 [1 + (k4/k3)^2] / (2 (1 - nu^2)),  k4/k3 = pi (1 - 2nu) / (2 (1 - nu))
+ * (the thesis prints a factor E inside beta as well; k_n = beta E must be
+ * a modulus, so beta is the number), and the 2D law m = 1, alpha = 2 beta
+ * (Eq. 3.43): F = 2 beta E delta, the small-overlap limit of beta E b^2/R.
+ * nu in (-1, 0.5]. */
+double dem_law_ghertz2d_beta(double nu);
+int dem_law_ghertz2d(dem_law_t *law, double E, double nu, dem_error_t *e);
+
+/* The 2D Winkler law (Eqs. 3.33-3.39) on a foundation of stiffness k_w
+ * (traction per unit overlap, Pa/m) for a disk of radius R: the alpha of
+ * the 2D law m = 3/2 with the same small-overlap force,
+ * 4 sqrt(2) k_w R / (3 E). */
+double dem_law_winkler2d_alpha(double kw, double E, double R);
+
+/* The thesis writes its 2D laws with R^(m-1), in mm and N (Ch. 7.4): the
+ * alpha of our 2D law (R^(1-m)) that gives the thesis's force for its
+ * alpha_t and a disk of radius R (in m): alpha_t (R / 1 mm)^(2m-2), i.e.
+ * alpha_t for m = 1, alpha_t R / (1 mm) for m = 3/2. */
+double dem_law_alpha_thesis2d(double alpha_t, double m, double R);
 
 /* The classic Hertz law of a rigid sphere on an elastic half-space
  * (Eqs. 3.27-3.29): k_n = 4/3 E/(1 - nu^2) sqrt(R), m = 3/2. */
@@ -62,7 +111,7 @@ double dem_law_estar(double E1, double nu1, double E2, double nu2);
 /* Relative radius R1 R2 / (R1 + R2) of two spheres (Eq. 3.28). */
 double dem_law_reff(double R1, double R2);
 
-/* k_n = coef R^(2-m) (no pow() for m = 1, 1.5, 2). */
+/* k_n = coef R^(2-m) in 3D, coef R^(1-m) in 2D (no pow() for m = 1, 1.5, 2). */
 double dem_law_kn(const dem_law_t *law, double R);
 
 /* F_n = k_n delta^m (0 for delta <= 0) and the tangent stiffness

@@ -184,7 +184,7 @@ int dem_contact_model_init(dem_contact_model_t *cm, const dem_contact_param_t *p
 	if (p->friction && !(p->kt_ratio >= 0 && isfinite(p->kt_ratio)))
 		return dem_error_set(e, DEM_EINPUT, "contact model: tangential stiffness ratio %g: expected >= 0", p->kt_ratio);
 	if (p->partial != DEM_PARTIAL_AREA && p->partial != DEM_PARTIAL_VOLUME &&
-	    p->partial != DEM_PARTIAL_POTENTIAL)
+	    p->partial != DEM_PARTIAL_POTENTIAL && p->partial != DEM_PARTIAL_WIDTH)
 		return dem_error_set(e, DEM_EINPUT, "contact model: unknown partial contact scheme %d", p->partial);
 	cm->p = *p;
 	cm->m = m;
@@ -205,14 +205,14 @@ int dem_contact_model_init(dem_contact_model_t *cm, const dem_contact_param_t *p
 
 	char *b = cm->effects;
 	size_t n = sizeof cm->effects;
-	int w = snprintf(b, n, "law m=%g", m);
+	int w = snprintf(b, n, "law m=%g%s", m, p->law.dim == 2 ? " (2D)" : "");
 	if (p->damping == DEM_DAMP_VISCOUS)
 		w += snprintf(b + w, n - w, ", viscous damping xi=%g", p->xi);
 	else if (p->damping == DEM_DAMP_HYSTERESIS)
 		w += snprintf(b + w, n - w, ", hysteresis k'/k=%g", p->unload);
 	if (p->friction)
 		w += snprintf(b + w, n - w, ", friction mu=%g", p->mu);
-	static const char *const partial[] = { "potential", "area", "volume" };
+	static const char *const partial[] = { "potential", "area", "volume", "width" };
 	snprintf(b + w, n - w, ", partial %s", partial[p->partial]);
 	return DEM_OK;
 }

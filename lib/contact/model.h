@@ -97,8 +97,10 @@
 
 enum { DEM_DAMP_NONE = 0, DEM_DAMP_VISCOUS = 1, DEM_DAMP_HYSTERESIS = 2 };
 /* partial contact (facet.h): the energy's gradient (the default; beyond
- * the thesis), the area factor (Eq. 3.15), the volume factor (Eq. 3.16) */
-enum { DEM_PARTIAL_POTENTIAL = 0, DEM_PARTIAL_AREA = 1, DEM_PARTIAL_VOLUME = 2 };
+ * the thesis), the area factor (Eq. 3.15), the volume factor (Eq. 3.16);
+ * for disks on segments (disk.h) the overlap area factor (Eq. 3.10) and
+ * the contact width factor (Eq. 3.11), the others counting as area */
+enum { DEM_PARTIAL_POTENTIAL = 0, DEM_PARTIAL_AREA = 1, DEM_PARTIAL_VOLUME = 2, DEM_PARTIAL_WIDTH = 3 };
 enum { DEM_SEPFIX_ON = 0, DEM_SEPFIX_OFF = 1 };          /* separation correction (above) */
 
 /* What a scene asks for.  Zero-initialise, then fill. */
@@ -110,7 +112,7 @@ typedef struct dem_contact_param {
 	int friction;     /* 0 absent, 1 present */
 	double mu;        /* Coulomb coefficient >= 0 (Eq. 3.48) */
 	double kt_ratio;  /* k_t = kt_ratio gamma K_n (Eq. 3.72); 0: the default 2/7 */
-	int partial;      /* DEM_PARTIAL_POTENTIAL (0), _AREA or _VOLUME */
+	int partial;      /* DEM_PARTIAL_POTENTIAL (0), _AREA, _VOLUME or (2D) _WIDTH */
 	int sepfix;       /* DEM_SEPFIX_ON (default) or DEM_SEPFIX_OFF, for rigid pairs (above) */
 } dem_contact_param_t;
 

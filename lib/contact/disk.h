@@ -1,0 +1,117 @@
+/* disk.h - disk/segment and disk/disk contact in two dimensions (Han 2004,
+ * Ch. 3.2.1), with the normal laws of law.h at dim = 2 and the kernels of
+ * model.h (friction, damping) unchanged.
+ *
+ * A disk is a dem_sphere_t (facet.h) in the plane z = 0: x and v in the
+ * plane (their z components zero), its spin w[2] about z, kn from a 2D
+ * law (dem_law_kn with law.dim = 2: a force per unit thickness).  Masses
+ * are per unit thickness too.  Disk/disk contact is then
+ * dem_contact_sphere_sphere (sphere.h) as it stands: delta = R1 + R2 - d
+ * (Eq. 3.8), n along the line of centres, and the co-rotation of the
+ * tangential force (Eqs. 3.57-3.59) keeps a force in the plane there
+ * (the normal turns about z, (w2 - w1) . n = 0).
+ *
+ * Disk/segment.  The segment A -> B has the disk on its left: its unit
+ * normal nf = (-t_y, t_x), t = (B - A)/L, points out of the solid to the
+ * disk.  With d = (O - A) . nf the distance of the disk's centre O from the
+ * segment's line (0 < d < R for contact; a centre behind the line is no
+ * contact), the full contact (the segment extended if need be) has
+ *     delta = R - d            (Eq. 3.3)
+ *     b = sqrt(delta (2R - delta))      the half width  (Eq. 3.4)
+ *     g(x) = sqrt(R^2 - x^2) - d, x in [-b, b]   the overlap (Eq. 3.2)
+ * about C, O's foot on the line (x along t).  The chord [-b, b] clipped to
+ * the segment, [x0, x1], is the partial contact (Figs. 3.3-3.4); empty:
+ * no contact.  The force of the full contact F_n (the law at delta) is
+ * scaled by gamma (Eq. 3.9), by one of the two schemes of Ch. 3.2.1:
+ *   area   (Eq. 3.10)  gamma = S_p / S_f, S_p = int_{x0}^{x1} g dx, S_f the
+ *                      same over [-b, b] (Eq. 3.5; Eq. 3.7 for small
+ *                      delta); the force acts along G -> O, G the
+ *                      centroid of S_p, through the point P where the
+ *                      line G O meets the segment;
+ *   width  (Eq. 3.11)  gamma = (x1 - x0) / (2b); the force acts along
+ *                      P -> O, P the middle of [x0, x1] on the segment.
+ * (Any other partial setting of the model, the 3D potential or volume
+ * scheme, counts as area.)  The integrals of the area scheme are taken
+ * with g written without cancellation, g = (b^2 - x^2) / (sqrt(R^2 - x^2)
+ * + d), by Gauss-Legendre (2 panels of 8 points; 1e-15 of S for delta <
+ * R/10), so
+ * gamma stays accurate as delta -> 0.  In full contact both give gamma =
+ * 1, the force along nf through C.  Along collinear segments the factors
+ * add up to one whatever the joints (the x-ranges tile [-b, b]), so a disk
+ * crossing a joint feels the full contact force, its direction off by at
+ * most the tilt of the pieces' lines of action, O(b/R) (the first moments
+ * of the area pieces sum to that of S_f, their tilts cancel to first
+ * order).
+ *
+ * The force on the disk, F (normal gamma F_n n, plus friction and damping
+ * from the kernel, their torque about O in T[2]), acts at P; the segment
+ * gets -F at P, shared by its nodes as P = (1 - xi) A + xi B:
+ *     F_A = -(1 - xi) F,   F_B = -xi F.
+ * This keeps force and moment: the node forces have the resultant -F and,
+ * P lying on A B, the moment of -F at P; the disk's F through P with the
+ * torque r x F_t about O (r = P - O) is F at P.  The pair is in
+ * equilibrium about every point.  (P lies within the segment, to the
+ * order of delta/R at the chord's ends.)
+ *
+ * Friction and damping (Eqs. 3.54-3.62, 3.70-3.76) as in 3D: the kernel
+ * with the relative velocity at P, v + w x r minus the segment's velocity
+ * there, (1 - xi) V_A + xi V_B, and no spin about the normal (wn = 0).
+ * The default k_t / K_n of model.h, 2/7, is the sphere's; a solid disk's
+ * tangential motion at its rim has the effective mass M/3 (I = M R^2/2),
+ * so its tangential spring runs at sqrt(6/7) = 0.93 of the normal
+ * frequency, under the normal step of Box 3.1 (kt_ratio 1/3 would match
+ * them).  Each segment keeps its own friction state: a disk moving onto
+ * the next segment builds the share that segment carries from zero over
+ * a slip of about mu delta / kt_ratio, small against the contact width.
+ */
+#ifndef DEM_CONTACT_DISK_H
+#define DEM_CONTACT_DISK_H
+
+#include "contact/facet.h"
+
+/* The geometry of one disk/segment pair. */
+typedef struct dem_seg_geom {
+	double delta;  /* full contact overlap R - d (Eq. 3.3) */
+	double d;      /* distance of O from the segment's line */
+	double b;      /* full contact half width (Eq. 3.4) */
+	double x0, x1; /* the chord [-b, b] clipped to the segment, along t from C */
+	double gamma;  /* partial contact factor (Eqs. 3.9-3.11), 1 in full contact */
+	double Sp, Sf; /* area scheme: overlap areas of the partial and full contact; else 0 */
+	double G[2];   /* area scheme: centroid of S_p; width: P */
+	double P[2];   /* point of action on the segment */
+	double n[2];   /* unit direction P -> O (= G -> O): the normal force on the disk */
+	double xi;     /* P = (1 - xi) A + xi B */
+	int full;      /* 1: the chord lies within the segment */
+} dem_seg_geom_t;
+
+/* Overlap of the disk (O, R) with the segment A -> B (disk on the left):
+ * returns 1 and fills g when they overlap (0 < d < R, a chord of positive
+ * length on the segment), 0 otherwise.  scheme: DEM_PARTIAL_WIDTH, or the
+ * area scheme for any other value. */
+int dem_segment_geom(const double O[2], double R, const double A[2], const double B[2], int scheme,
+                     dem_seg_geom_t *g);
+
+/* The overlap area of a disk of radius R with a half-plane, overlap delta
+ * in [0, 2R] (Eq. 3.5: 2 R^2 atan(delta/b) - (R - delta) b), for the
+ * Winkler law F = k_w S (Eq. 3.34); closed form, for tests (the pair
+ * functions integrate without its cancellation at small delta). */
+double dem_disk_segment_area(double R, double delta);
+
+/* The result of one disk/segment pair at one step. */
+typedef struct dem_seg_out {
+	dem_seg_geom_t g;
+	dem_contact_out_t c;  /* force (z = 0) on the disk, torque (about z, T[2]) about O */
+	double Fnode[2][2];   /* forces on A and B (sum -c.F, moment consistent) */
+} dem_seg_out_t;
+
+/* One disk/segment pair at one step: geometry (by cm->p.partial), then
+ * cm->kernel.  s: the disk (dem_sphere_t in the plane, kn from a 2D law).
+ * X: the nodes A, B; V: their velocities (NULL for a segment at rest);
+ * meff: the equivalent mass (Eq. 3.75; the disk's for a rigid segment).
+ * Returns 1 in contact (out filled), 0 otherwise (state reset, out
+ * untouched). */
+int dem_contact_disk_segment(const dem_contact_model_t *cm, const dem_sphere_t *s,
+                             const double X[2][2], const double (*V)[2], double meff, double dt,
+                             dem_contact_state_t *st, dem_seg_out_t *out);
+
+#endif
