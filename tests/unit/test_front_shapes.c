@@ -241,10 +241,67 @@ static void pack(const dem_front_spec_t *s, unsigned long seed, struct bodies *o
 	gsl_rng_free(g);
 }
 
+/* Whether the ellipse (centre c, semi-axes a, b, angle th) lies inside the
+ * polygon v[nd] (any simple polygon, convex or not): its centre inside by
+ * the crossing rule and no edge nearer than 1 - tol to the centre in the
+ * frame where the ellipse is the unit circle (the affine map keeps
+ * segments; the ellipse is connected and holds its centre, so it cannot
+ * reach outside without meeting an edge). */
+static int ellipse_in_polygon(const double c[2], double a, double b, double th,
+			      const double *v, int nd, double tol)
+{
+	int in = 0;
+	for (int i = 0, j = nd - 1; i < nd; j = i++)
+		if ((v[2 * i + 1] > c[1]) != (v[2 * j + 1] > c[1]) &&
+		    c[0] < v[2 * j] + (c[1] - v[2 * j + 1]) * (v[2 * i] - v[2 * j]) /
+				       (v[2 * i + 1] - v[2 * j + 1]))
+			in = !in;
+	if (!in)
+		return 0;
+	double cs = cos(th), sn = sin(th);
+	for (int i = 0; i < nd; i++) {
+		double p[2][2];
+		for (int k = 0; k < 2; k++) {
+			const double *q = v + 2 * ((i + k) % nd);
+			double dx = q[0] - c[0], dy = q[1] - c[1];
+			p[k][0] = (cs * dx + sn * dy) / a;
+			p[k][1] = (-sn * dx + cs * dy) / b;
+		}
+		double ex = p[1][0] - p[0][0], ey = p[1][1] - p[0][1];
+		double t = -(p[0][0] * ex + p[0][1] * ey) / (ex * ex + ey * ey);
+		t = t < 0 ? 0 : t > 1 ? 1 : t;
+		if (hypot(p[0][0] + t * ex, p[0][1] + t * ey) < 1 - tol)
+			return 0;
+	}
+	return 1;
+}
+
+/* ellipse_in_polygon, the check the packings are held to, on the L's
+ * reflex corner and its edges */
+static void test_ellipse_in_polygon(void **state)
+{
+	(void)state;
+	const double L[12] = {0, 0, 2, 0, 2, 1, 1, 1, 1, 2, 0, 2};
+	const double pi = acos(-1);
+	assert_true(ellipse_in_polygon((double[2]){0.5, 0.5}, 0.4, 0.2, 0, L, 6, EPS));
+	/* centre in the notch */
+	assert_false(ellipse_in_polygon((double[2]){1.2, 1.2}, 0.1, 0.05, 0, L, 6, EPS));
+	/* along the diagonal into the notch, or across it past the corner */
+	assert_false(ellipse_in_polygon((double[2]){0.9, 0.9}, 0.3, 0.05, pi / 4, L, 6, EPS));
+	assert_true(ellipse_in_polygon((double[2]){0.9, 0.9}, 0.3, 0.05, -pi / 4, L, 6, EPS));
+	/* touching the edge x = 0, and a hundredth beyond it */
+	assert_true(ellipse_in_polygon((double[2]){0.3, 0.5}, 0.3, 0.1, 0, L, 6, EPS));
+	assert_false(ellipse_in_polygon((double[2]){0.29, 0.5}, 0.3, 0.1, 0, L, 6, EPS));
+	/* the same ellipse turned upright fits */
+	assert_true(ellipse_in_polygon((double[2]){0.29, 0.5}, 0.3, 0.1, pi / 2, L, 6, EPS));
+}
+
+
 /* Every pair whose bounding boxes meet, by the independent tests; every
  * body inside the rectangle (polygon: its points; ellipse: its extents),
  * or for a polygon domain dom[nd] every point inside it by the crossing
- * rule and no reflex point inside a body (polygons only). */
+ * rule and no reflex point inside a body (polygons), every ellipse inside
+ * it by ellipse_in_polygon. */
 static void check(const dem_front_spec_t *s, const struct bodies *B, const char *label)
 {
 	dem_boxes_t bx;
@@ -274,7 +331,8 @@ static void check(const dem_front_spec_t *s, const struct bodies *B, const char 
 			if (b->x[0] - ex < s->lo[0] - tol || b->x[0] + ex > s->hi[0] + tol ||
 			    b->x[1] - ey < s->lo[1] - tol || b->x[1] + ey > s->hi[1] + tol)
 				fail_msg("%s: ellipse %zu sticks out", label, i);
-		}
+		} else if (!ellipse_in_polygon(b->x, b->a, b->b, b->theta, s->polygon, s->npolygon, EPS))
+			fail_msg("%s: ellipse %zu not inside the polygon", label, i);
 		if (s->polygon && s->shape == DEM_FRONT_POLYGON)
 			for (int k = 0; k < m; k++) {
 				/* crossing rule, then every vertex of the
@@ -398,8 +456,7 @@ static void test_sides_and_polygon_domain(void **state)
 			free(B.b);
 		}
 	}
-	/* ellipses in the L: no overlap (their being inside is checked by
-	 * the packer only: the test has no exact ellipse-in-polygon rule) */
+	/* ellipses in the L: no overlap, each inside (ellipse_in_polygon) */
 	dem_front_spec_t s = spec(DEM_FRONT_ELLIPSE, DEM_FRONT_OPEN, 20, 0.4, 1.5, 4);
 	s.polygon = L;
 	s.npolygon = 6;
@@ -458,6 +515,7 @@ int main(void)
 		cmocka_unit_test(test_sat),
 		cmocka_unit_test(test_minkowski),
 		cmocka_unit_test(test_ellipse_geometry),
+		cmocka_unit_test(test_ellipse_in_polygon),
 		cmocka_unit_test(test_forms),
 		cmocka_unit_test(test_sides_and_polygon_domain),
 		cmocka_unit_test(test_refused),
