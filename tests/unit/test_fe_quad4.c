@@ -817,6 +817,49 @@ static void test_uniaxial_strain(void **state)
 	dem_mat_free(&mats[1]);
 }
 
+/* The consistent tangent of the static element against central
+ * differences of its internal force, in a plastic increment (linear
+ * hardening; every Gauss point yields) from a prestressed history, both
+ * modes, plain and B-bar, on an element touching the axis: agreement to
+ * 1e-6 of the largest entry. */
+static void test_static_tangent_fd(void **state)
+{
+	(void)state;
+	dem_mat_t mat;
+	make_mat(&mat, 200 * GPA, 0.3, 300 * MPA, 5 * GPA);
+	double X[8] = { 0, 1e-3, 1.2e-3, 0, 0, 0.1e-3, 1e-3, 0.8e-3 };
+	double du[8] = { 3e-6, 4e-6, 5e-6, 2e-6, -1e-6, 2e-6, -6e-6, -3e-6 };
+	dem_quad4_hist_t hn = HZERO, h;
+	for (int p = 0; p < 4; p++) {
+		hn.sig[6 * p] = 250 * MPA;
+		hn.sig[6 * p + 1] = -50 * MPA;
+		hn.ep[p] = 0.01;
+	}
+	for (int mode = 0; mode < 2; mode++)
+		for (int rule = 0; rule < 2; rule++) {
+			double f[8], K[64], fp[8], fm[8], wp;
+			assert_int_equal(dem_quad4_static(&mat, mode, 1e-3, rule, X, du, &hn, &h, f, K, &wp), 0);
+			for (int p = 0; p < 4; p++)
+				assert_true(h.ep[p] > hn.ep[p]);
+			assert_true(wp > 0);
+			double Kmax = vmax(K, 64), err = 0;
+			for (int j = 0; j < 8; j++) {
+				double d2[8], eps = 1e-9;
+				memcpy(d2, du, sizeof d2);
+				d2[j] += eps;
+				assert_int_equal(dem_quad4_static(&mat, mode, 1e-3, rule, X, d2, &hn, &h, fp, NULL, NULL), 0);
+				d2[j] -= 2 * eps;
+				assert_int_equal(dem_quad4_static(&mat, mode, 1e-3, rule, X, d2, &hn, &h, fm, NULL, NULL), 0);
+				for (int i = 0; i < 8; i++)
+					err = fmax(err, fabs((fp[i] - fm[i]) / (2 * eps) - K[8 * i + j]));
+			}
+			printf("# static tangent %s %s: max |K - FD| / max |K| = %.1e\n",
+			       mode ? "axisym" : "plane", rule ? "B-bar" : "2x2", err / Kmax);
+			assert_true(err < 1e-6 * Kmax);
+		}
+	dem_mat_free(&mat);
+}
+
 /* ---- Lame's thick cylinder ----------------------------------------------- */
 
 /* Inner radius a, outer b, internal pressure p, plane strain:
@@ -1038,6 +1081,67 @@ static void test_bbar_locking(void **state)
 		}
 }
 
+/* Large rotation, updated Lagrangian as explicit.c's large option: a
+ * distorted element carrying sig_xx = s, sig_zz = s/2 (plane strain)
+ * turns rigidly by 90 degrees in 4000 steps, its geometry at the step's
+ * midpoint, the stress rotated by dem_mat_jaumann with the element's spin
+ * and updated by dem_mat_update with its (vanishing) strain increment.
+ * At the end the stress is sig_yy = s within 1e-3 s (first order in the
+ * step; measured 6.2e-4 s), sig_zz unchanged, and the nodal forces are
+ * those of the exact rotated stress on the rotated element within
+ * 2e-3 s |b_I|max (b_I = dA/dx_I, so within the stress error).  A
+ * wrong sign of the spin turns the stress the other way (sig_xy = -s/2
+ * at 45 degrees instead of +s/2, and back to sig_xx at 180). */
+static void test_large_rotation(void **state)
+{
+	(void)state;
+	dem_mat_t mat;
+	make_elastic(&mat);
+	double X[8];
+	distorted(X, 0.3);
+	const double s0 = 100 * MPA, om = 1e3, T = 0.5 * PI / om;
+	const int n = 4000;
+	double dt = T / n, sig[6] = { s0, 0, 0.5 * s0, 0, 0, 0 }, ep = 0;
+	for (int k = 0; k < n; k++) {
+		double th = om * dt * (k + 0.5), c = cos(th), sn = sin(th), x[8], v[8], d[6], w[3];
+		for (int I = 0; I < 4; I++) {
+			x[I] = c * X[I] - sn * X[4 + I];
+			x[4 + I] = sn * X[I] + c * X[4 + I];
+			v[I] = -om * x[4 + I];
+			v[4 + I] = om * x[I];
+		}
+		dem_quad4_1pt_t g;
+		assert_int_equal(dem_quad4_1pt_geom(x, DEM_QUAD4_PLANE, 1, &g), 0);
+		dem_quad4_1pt_rate(&g, v);
+		dem_quad4_strain_rate(g.L, g.zz, d, w);
+		assert_true(rel(w[0], -om) < 1e-12);
+		if (k == n / 2) {   /* 45 degrees: sig_xy = s/2 */
+			assert_true(fabs(sig[3] - 0.5 * s0) < 1e-3 * s0);
+		}
+		dem_mat_jaumann(sig, w, dt);
+		double deps[6], wp;
+		for (int m = 0; m < 6; m++)
+			deps[m] = d[m] * dt;
+		dem_mat_update(&mat, deps, dt, sig, &ep, NULL, &wp);
+	}
+	printf("# large rotation: sig after 90 degrees / s = %.2e %.6f %.6f %.2e\n", sig[0] / s0,
+	       sig[1] / s0, sig[2] / s0, sig[3] / s0);
+	assert_true(fabs(sig[0]) < 1e-3 * s0 && fabs(sig[1] - s0) < 1e-3 * s0);
+	assert_true(fabs(sig[2] - 0.5 * s0) < 1e-12 * s0 && fabs(sig[3]) < 1e-3 * s0);
+	double x[8], f[8], fr[8], sr[6] = { 0, s0, 0.5 * s0, 0, 0, 0 };
+	for (int I = 0; I < 4; I++) {
+		x[I] = -X[4 + I];
+		x[4 + I] = X[I];
+	}
+	dem_quad4_1pt_t g;
+	assert_int_equal(dem_quad4_1pt_geom(x, DEM_QUAD4_PLANE, 1, &g), 0);
+	dem_quad4_1pt_force(&g, sig, NULL, f);
+	dem_quad4_1pt_force(&g, sr, NULL, fr);
+	for (int i = 0; i < 8; i++)
+		assert_true(fabs(f[i] - fr[i]) < 2e-3 * s0 * vmax(g.b, 8));
+	dem_mat_free(&mat);
+}
+
 /* ---- mass and time step -------------------------------------------------- */
 
 /* Lumped masses: a square h x h, thickness t: rho t h^2 / 4 each; the
@@ -1186,8 +1290,10 @@ int main(void)
 		cmocka_unit_test(test_stiffness_rank),
 		cmocka_unit_test(test_hourglass),
 		cmocka_unit_test(test_uniaxial_strain),
+		cmocka_unit_test(test_static_tangent_fd),
 		cmocka_unit_test(test_lame),
 		cmocka_unit_test(test_bbar_locking),
+		cmocka_unit_test(test_large_rotation),
 		cmocka_unit_test(test_mass),
 		cmocka_unit_test(test_dt),
 	};
