@@ -407,16 +407,20 @@ int dem_quad4_dt_crit(const double x[8], dem_quad4_mode_t mode, double c, double
 	*dt = 0;
 	double d13x = x[2] - x[0], d13y = y[2] - y[0], d24x = x[3] - x[1], d24y = y[3] - y[1];
 	double area = 0.5 * (d13x * d24y - d24x * d13y);
-	double dmax = fmax(hypot(d13x, d13y), hypot(d24x, d24y));
-	if (!(area > 0) || !(dmax > 0) || !(c > 0) || off_axis(x, mode))
+	double emax = 0;
+	for (int I = 0; I < 4; I++) {
+		int n = (I + 1) & 3;
+		emax = fmax(emax, hypot(x[n] - x[I], y[n] - y[I]));
+	}
+	if (!(area > 0) || !(emax > 0) || !(c > 0) || off_axis(x, mode))
 		return DEM_QUAD4_INVERTED;
-	double l = area / dmax;
+	double l = area / emax;
 	if (mode == DEM_QUAD4_AXISYM) {
 		/* the hoop strain stiffens an element whose radial extent is
 		 * not small against its distance from the axis (quad4.h) */
 		double rmin = fmin(fmin(x[0], x[1]), fmin(x[2], x[3]));
 		double rmax = fmax(fmax(x[0], x[1]), fmax(x[2], x[3]));
-		double r0 = 0.25 * (x[0] + x[1] + x[2] + x[3]), s = 0.4 * (rmax - rmin) / r0;
+		double r0 = 0.25 * (x[0] + x[1] + x[2] + x[3]), s = 0.2 * (rmax - rmin) / r0;
 		l /= sqrt(1 + s * s);
 	}
 	*dt = l / c;

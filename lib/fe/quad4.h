@@ -95,7 +95,7 @@ typedef struct dem_quad4_1pt {
 
 /* Geometry at coordinates x: area, uniform gradient, hourglass vector.
  * t is the thickness (PLANE; ignored for AXISYM).  Returns
- * DEM_QUAD4_INVERTED when the area (so det J at the centre) is not
+ * DEM_QUAD4_INVERTED when the area (so det J at the centre) or t is not
  * positive or not a number, or for AXISYM a node lies at r < 0; the work
  * space is then unfit for the other calls. */
 int dem_quad4_1pt_geom(const double x[8], dem_quad4_mode_t mode, double t,
@@ -209,28 +209,22 @@ void dem_quad4_gauss_points(const double x[8], double xg[8]);
 int dem_quad4_lumped_mass(const double x[8], dem_quad4_mode_t mode, double t,
 			  double rho, double mass[4]);
 
-/* Critical time step dt = l / c with the characteristic length
- * l = A / (longest diagonal) and c the dilatational wave speed
- * sqrt((K + 4G/3)/rho) (the same in plane strain); for AXISYM l is
- * further divided by sqrt(1 + s^2), s = 0.4 (r_max - r_min) / r0 (the
- * element's radial extent over its mean nodal radius).
- *
- * Not hex8's V / (largest face), whose 2D form A / (longest edge) gives a
- * square h/c: the highest mode of a mesh of squares with lumped masses is
- * the dilatation alternating from node to node in x and in y, omega^2 =
- * 8 (lambda + mu) / (rho h^2), above (2 c / h)^2 for any nu > 0 (h/c is
- * 1.195 times the stable step at nu = 0.3, sqrt 2 times as nu -> 1/2).
- * The diagonal gives a square h / (sqrt 2 c), within that mode's limit
- * for every nu.  Near the axis the hoop strain raises the element's
- * highest frequency, by up to 22 % on the axis (a 1 x 4 element standing
- * on it) and off it omega_max^2 by a fraction of about 0.08 (w_r / r0)^2
- * (w_r = r_max - r_min); the factor covers the
- * shapes of the test (squares from the axis to r0 = 10.5 h, 1:2 and 1:4
- * rectangles standing and lying on the axis, a distorted element on it,
- * nu = 0.3 and 0.4999, every rule), checked against each element's own
- * eigenvalues with the radial dofs of its axis nodes held (a bound for
- * any mesh of such elements).  Returns DEM_QUAD4_INVERTED (and *dt = 0)
- * for a bad element, c <= 0 or (AXISYM) a node at r < 0. */
+/* Critical time step dt = l / c with hex8's characteristic length in 2D,
+ * l = A / (longest edge) (a square of side h: l = h, the crossing time of
+ * the dilatational wave), and c the dilatational wave speed
+ * sqrt((K + 4G/3)/rho) (the same in plane strain).  For AXISYM l is
+ * further divided by sqrt(1 + s^2), s = 0.2 (r_max - r_min) / r0 (radial
+ * extent over mean nodal radius), a margin for the hoop strain, which
+ * stiffens the elements next to the axis (a mesh of squares there: 1.109
+ * without it, 1.029 with it, at nu = 0.4999).  Like hex8's, the estimate
+ * is the mesh's, not a bound of the single free element (whose highest
+ * frequency it exceeds by 1.195 for a square at nu = 0.3): the test
+ * measures dt omega_max / 2 of whole free meshes of squares, both modes,
+ * on and off the axis, every rule: at most 1.011 at nu = 0.3 and 1.098 at
+ * nu = 0.4999 (free edges and corners lift omega_max a little above the
+ * 2 c / h of an unbounded mesh), stable under explicit.c's default
+ * dt_factor 0.9.  Returns DEM_QUAD4_INVERTED (and *dt = 0) for a bad
+ * element, c <= 0 or (AXISYM) a node at r < 0. */
 int dem_quad4_dt_crit(const double x[8], dem_quad4_mode_t mode, double c, double *dt);
 
 #endif
