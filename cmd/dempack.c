@@ -59,7 +59,7 @@ static const dem_opt_t options[] = {
 	{"form", OPT_FORM, "FORM", "front: closed (from the centre) or open (from the bottom); default open"},
 	{"domain", OPT_DOMAIN, "XLO:YLO:XHI:YHI", "front: the rectangle to fill; default 0:0:50:50 (m)"},
 	{"polygon", OPT_POLYGON, "X:Y:X:Y:X:Y[:X:Y]", "front, open form: fill this simple polygon (3 or more vertices, convex or concave) instead of --domain"},
-	{"vtk", OPT_VTK, "FILE", "front, compress: also write the packing to FILE as legacy VTK points with a radius scalar (ParaView)"},
+	{"vtk", OPT_VTK, "FILE", "front (disks), compress: also write the packing to FILE as legacy VTK points with a radius scalar (ParaView)"},
 	{"check-limit", OPT_CHECK_LIMIT, "K", "front: check at most K front disks each way; default 0, no limit"},
 	{"gravity", OPT_GRAVITY, NULL, "front, open form: each disk rests stably under gravity (-y)"},
 	{"shape", OPT_SHAPE, "SHAPE", "front: disk, polygon or ellipse (Ch. 5.3-5.4; a body stream); default disk"},
@@ -189,6 +189,7 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 	dem_cli_t c;
 	dem_common_t *com = &cl->com;
 	unsigned long long given = 0;   /* bit i: method_opts[i] was typed */
+	const char *shape = NULL;       /* --shape as typed */
 	int k;
 
 	memset(cl, 0, sizeof *cl);
@@ -204,6 +205,8 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 			cl->stages = optarg;
 			continue;
 		}
+		if (k == OPT_SHAPE)     /* --vtk draws disks only: checked below */
+			shape = optarg;
 		for (size_t i = 0; i < NMETHOD_OPTS; i++) {
 			const struct method_opt *o = &method_opts[i];
 			if (k != o->key)
@@ -234,6 +237,9 @@ static int parse_cmdline(int argc, char **argv, struct cmdline *cl)
 				dem_cli_error(&c, "%s: not an option of method %s", method_opts[i].name, methods[m]);
 		if (cl->vtk && m >= 0 && m != METHOD_FRONT && m != METHOD_COMPRESS)
 			dem_cli_error(&c, "--vtk: not an option of method %s", methods[m]);
+		if (cl->vtk && shape && strcmp(shape, "disk") != 0)
+			dem_cli_error(&c, "--vtk: disks only, not with --shape %s (a body stream "
+				      "is drawn by its rows, dem-streams(5))", shape);
 		if (cl->stages && m >= 0 && m != METHOD_COMPRESS)
 			dem_cli_error(&c, "--stages: not an option of method %s", methods[m]);
 		if (m >= 0)     /* the method typed wins over the scene's */

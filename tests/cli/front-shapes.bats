@@ -88,7 +88,17 @@ check_bodies() {
 	run --separate-stderr dempack front -s "$T/s.yaml" -o "$T/x"
 	[ "$status" -eq 1 ]
 	[[ ${stderr_lines[0]} == "dempack: $T/s.yaml:6:"*"pack.ratio.max"* ]]
-	run --separate-stderr dempack front --shape ellipse --vtk "$T/v.vtk" -o "$T/x"
+	# --vtk draws disks: with --shape typed, a usage error; with the
+	# shape from the scene, a bad input
+	usage_error dempack front --shape ellipse --vtk "$T/v.vtk" -o "$T/x"
+	[[ ${stderr_lines[0]} == *"--vtk: disks only"* ]]
+	[ ! -e "$T/x" ] && [ ! -e "$T/v.vtk" ]
+	dempack front --shape disk --vtk "$T/v.vtk" --rmin 0.1 -q -o "$T/x"
+	[ -s "$T/v.vtk" ] && [ -s "$T/x" ]
+	rm -f "$T/x" "$T/v.vtk"
+	printf 'pack:\n  method: front\n  shape: ellipse\n' >"$T/e.yaml"
+	run --separate-stderr dempack front -s "$T/e.yaml" --vtk "$T/v.vtk" -o "$T/x"
 	[ "$status" -eq 1 ]
+	[[ ${stderr_lines[0]} == *"--vtk: disks only"* ]]
 	[ ! -e "$T/x" ] && [ ! -e "$T/v.vtk" ]
 }
