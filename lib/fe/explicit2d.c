@@ -302,7 +302,11 @@ static void apply_pressure(dem_fe2_t *fe, const pload2_t *pl, double t)
 		/* p L times the inward unit normal (t_y, -t_x)/L: p (t_y, -t_x);
 		 * times the out-of-plane measure shared by the shape functions */
 		double wa, wb;
-		if (axi) {
+		if (axi && fe->o.rule == DEM_FE_1PT) {
+			/* the one-point element's own rule: the ring at the
+			 * segment's middle (explicit2d.h) */
+			wa = wb = 0.25 * two_pi * (x[2 * a] + x[2 * b]);
+		} else if (axi) {
 			double ra = x[2 * a], rb = x[2 * b];
 			wa = two_pi * (2 * ra + rb) / 6;
 			wb = two_pi * (ra + 2 * rb) / 6;

@@ -126,11 +126,16 @@ void dem_fe2_free(dem_fe2_t *fe);
  * boundary segments seg[2 s + 0..1] (node numbers A, B, the outside on the
  * left of A -> B as contact/disk.h has it: dem_mesh2_top_segments), p(t)
  * piecewise linear through (t[i], p[i]) as dem_fe_add_pressure's.  The
- * nodal forces are the consistent ones of the linear segment: p L w / 2 on
- * each node in plane strain (w = t); in axisymmetry p L 2 pi (2 r_A + r_B)
- * / 6 on A and p L 2 pi (r_A + 2 r_B) / 6 on B (the ring's area weighted
- * by the shape functions); along the inward normal (current coordinates
- * in large strain).  Copied; several sets may be added.  DEM_EINPUT for a
+ * nodal forces are p L w / 2 on each node in plane strain (w = t); in
+ * axisymmetry, with the 2x2 rule the consistent ones, p L 2 pi (2 r_A +
+ * r_B) / 6 on A and p L 2 pi (r_A + 2 r_B) / 6 on B (the ring's area
+ * weighted by the shape functions), and with the one-point rule p L 2 pi
+ * r_m / 2 on each, r_m the segment's middle: the one-point element
+ * integrates its internal forces with the ring 2 pi r0 of its centre, and
+ * against those forces only this load makes a uniform stress an exact
+ * static state (at a node on the axis the consistent load is 2/3 of what
+ * the element's uniform sigma_zz pushes back with); along the inward
+ * normal (current coordinates in large strain).  Copied; several sets may be added.  DEM_EINPUT for a
  * bad node number or time table. */
 int dem_fe2_add_pressure(dem_fe2_t *fe, size_t nseg, const uint32_t *seg, size_t nt,
 			 const double *t, const double *p, dem_error_t *e);
