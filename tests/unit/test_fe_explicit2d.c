@@ -22,7 +22,9 @@
  *    damped to rest: sigma_zz = -p, sigma_rr = sigma_tt = 0,
  *    u_r = nu p r / E, u_r = 0 held exactly on the axis;
  *  - 2D impact: a rigid disk dropped on an elastic block through
- *    contact/disk.h (see the test's comment for the closed form).
+ *    contact/disk.h against the impact of the thesis's 2D Hertz law
+ *    (Eq. 3.45, m = 3/2) on a rigid surface, and against the same law in
+ *    series with the block's measured compliance (see test_drop).
  * Material: the steel of Ch. 7.4 (E 210 GPa, nu 0.3), elastic, density
  * 7800 kg/m^3 (assumed).
  */
@@ -592,6 +594,201 @@ static void test_axis(void **state)
 	axis_case(DEM_FE_FULL, 0);
 }
 
+/* ---- 5. A rigid disk dropped on the block (2D Hertz) ------------------------- */
+
+/* The closed form.  Ch. 3 writes its 2D laws in the single form of
+ * Eq. 3.45, F = alpha E R^(m-1) delta^m, and takes the "Hertz" one, m =
+ * 3/2, with the coefficient of the classic law, Table 3.1: 4/3 E' sqrt(R)
+ * delta^(3/2), E' = E / (1 - nu^2), which the 2D Winkler model reaches with
+ * k_n = E' / sqrt 2 (Eq. 3.44).  For a disk that is a force per unit
+ * length only with the lengths in mm: the thesis's 2D alpha is per mm
+ * (law.h).  Per metre of thickness, in SI, the law is
+ *     F = k delta^(3/2),   k = alpha E R^(-1/2),
+ *     alpha = alpha_t R / (1 mm),   alpha_t = 4 / (3 (1 - nu^2))
+ * (dem_law_alpha_thesis2d; 1.465 alpha_t would be 1000^(1/2) times too
+ * stiff or soft if R were read in m against E in N/mm^2).  A rigid disk of
+ * mass M per unit thickness (rho_s pi R^2) at speed v on a rigid surface
+ * through this law: the energy M v^2 / 2 = 2/5 k d^(5/2) at the largest
+ * overlap, so
+ *     d = (5 M v^2 / (4 k))^(2/5),   F_max = k d^(3/2),
+ * and the time in contact, twice the time from 0 to d with
+ * v(delta) = v sqrt(1 - (delta/d)^(5/2)),
+ *     t_c = 2 (d / v) int_0^1 dx / sqrt(1 - x^(5/2)) = 2.94327 d / v,
+ * the 3D Hertz impact of DESIGN.md with k in place of 4/3 E* sqrt(R).
+ * This law is not the elasticity of a plane-strain half-space, whose
+ * approach under a line load grows like P ln(depth / contact width), no
+ * power law (Johnson 1985, Ch. 2): the closed form holds when the law, not
+ * the block, takes the approach.  The block's approach at the peak, about
+ * 2 P (1 - nu^2) ln(2 H / b) / (pi E), is a fraction eps =
+ * alpha_t sqrt(R d) / (1 mm) 2 (1 - nu^2) ln(2 H / b) / pi of d; in series
+ * with the law it stores eps/2 of the work at the peak, so to first order
+ * the force falls by 3/4 eps and the contact lasts 1/2 eps longer.  The
+ * test takes a shot of R = 0.25 mm at 0.2 m/s, where eps is 2.2 % (2.0 %
+ * measured), a block 40 b wide and 20 b deep (bottom fixed, sides on
+ * rollers), elements of b / 10 over [-2b, 2b] x 2b below the top (b / 4
+ * under the sanitizers), growing by 1.25 outside.  The contact:
+ * disk/segment (contact/disk.h) on the top segments within 4 b of the
+ * axis, area partial factor, no damping, no friction; the disk moves by
+ * the same central differences as the block, in the load hook.  Force and
+ * contact time within 5 % of the closed form (measured -1.37 % and
+ * +1.11 %, the same at b / 4 and b / 20); and within 0.5 % of the same
+ * impact with the block's measured compliance in series with the law
+ * (series_impact; measured +0.13 % and -0.04 %), which leaves nothing
+ * of the difference unexplained. */
+typedef struct drop {
+	dem_contact_model_t cm;
+	dem_sphere_t disk;
+	double M;                 /* disk mass per unit thickness */
+	size_t ns;
+	const uint32_t *seg;
+	dem_contact_state_t *st;
+	const double *X;          /* the block's reference coordinates */
+	double dtp;
+	long n;
+	double Fmax, dmax, t_on, t_off;
+	double uw;                /* at the peak: the surface's approach, the
+				   * mean node displacement weighted by the
+				   * contact forces (work-conjugate to P) */
+} drop_t;
+
+static int drop_hook(void *ctx, double t, double dt, const double *x, const double *v, double *f,
+		     dem_error_t *e)
+{
+	drop_t *d = ctx;
+	(void)e;
+	double F[2] = { 0, 0 }, dl = 0, fu = 0;
+	for (size_t s = 0; s < d->ns; s++) {
+		size_t a = d->seg[2 * s], b = d->seg[2 * s + 1];
+		double X[2][2] = { { x[2 * a], x[2 * a + 1] }, { x[2 * b], x[2 * b + 1] } };
+		double V[2][2] = { { v[2 * a], v[2 * a + 1] }, { v[2 * b], v[2 * b + 1] } };
+		dem_seg_out_t o;
+		if (!dem_contact_disk_segment(&d->cm, &d->disk, (const double (*)[2])X,
+					      (const double (*)[2])V, d->M, dt, &d->st[s], &o))
+			continue;
+		for (int c = 0; c < 2; c++) {
+			f[2 * a + c] += o.Fnode[0][c];
+			f[2 * b + c] += o.Fnode[1][c];
+			F[c] += o.c.F[c];
+		}
+		fu += o.Fnode[0][1] * (x[2 * a + 1] - d->X[2 * a + 1]) +
+		      o.Fnode[1][1] * (x[2 * b + 1] - d->X[2 * b + 1]);
+		dl = fmax(dl, o.g.delta);
+	}
+	if (F[1] > 0) {
+		if (d->t_on < 0)
+			d->t_on = t;
+		d->t_off = t + dt;
+		if (F[1] > d->Fmax)
+			d->uw = fu / F[1];
+		d->Fmax = fmax(d->Fmax, F[1]);
+		d->dmax = fmax(d->dmax, dl);
+	}
+	/* the disk: central differences with the block's steps */
+	double hs = d->n == 0 ? 0.5 * dt : 0.5 * (d->dtp + dt);
+	for (int c = 0; c < 2; c++) {
+		d->disk.v[c] += hs * F[c] / d->M;
+		d->disk.x[c] += dt * d->disk.v[c];
+	}
+	d->dtp = dt;
+	d->n++;
+	return 0;
+}
+
+/* The same impact against the law in series with a linear spring of
+ * compliance c (the block's, measured): the approach D = delta + c P with
+ * P = k delta^(3/2), M D'' = -P, by central differences in 20000 steps of
+ * the closed-form contact time; the largest P and the time in contact. */
+static void series_impact(double k, double c, double M, double v0, double tc, double *Fmax, double *tcon)
+{
+	double dt = tc / 20000, D = 0, V = v0, P = 0, t = 0;
+	*Fmax = 0;
+	do {
+		D += dt * V;
+		/* P from D: Newton on (P/k)^(2/3) + c P = D, increasing in P */
+		P = D > 0 ? fmax(P, 1e-30) : 0;
+		for (int it = 0; D > 0 && it < 50; it++) {
+			double q = pow(P / k, 2.0 / 3), g = q + c * P - D, dg = 2.0 / 3 * q / P + c;
+			double Pn = P - g / dg;
+			P = Pn > 0 ? Pn : 0.5 * P;
+			if (fabs(g) <= 1e-15 * D)
+				break;
+		}
+		V -= dt * P / M;
+		t += dt;
+		*Fmax = fmax(*Fmax, P);
+	} while (D > 0);
+	*tcon = t;
+}
+
+/* nb: elements on the closed-form half width b (10: the full case) */
+static void drop_case(int nb)
+{
+	const double R = 0.25e-3, v0 = 0.2, rho_s = 7800;
+	dem_mat_t mat;
+	steel(&mat);
+	double nu = mat.nu, at = 4 / (3 * (1 - nu * nu));
+	dem_law_t law;
+	dem_error_t e = { 0 };
+	assert_int_equal(dem_law_init_dim(&law, dem_law_alpha_thesis2d(at, 1.5, R), mat.E, 1.5, 2, &e), DEM_OK);
+	double k = dem_law_kn(&law, R), M = rho_s * PI * R * R;
+	double d = pow(5 * M * v0 * v0 / (4 * k), 0.4), Fc = k * pow(d, 1.5), tc = 2.94327 * d / v0;
+	double b = sqrt(2 * R * d), h = b / nb, W = 40 * b, H = 20 * b;
+	dem_axis_t ax[2] = { { -W / 2, W / 2, -2 * b, 2 * b, h, 1.25, 0 }, { 0, H, H - 2 * b, H, h, 1.25, 0 } };
+	dem_mesh2_t m;
+	assert_int_equal(dem_mesh2_rect(&m, ax, &e), DEM_OK);
+	dem_bc_t bc[4] = { DEM_BC_NORMAL, DEM_BC_NORMAL, DEM_BC_FIXED, DEM_BC_FREE };
+	dem_mesh2_set_bc(&m, bc);
+	dem_fe2_t *fe = model(&m, &mat, DEM_QUAD4_PLANE, DEM_FE_1PT, 0, 0);
+
+	drop_t dr;
+	memset(&dr, 0, sizeof dr);
+	dem_contact_param_t cp = { .law = law, .partial = DEM_PARTIAL_AREA };
+	assert_int_equal(dem_contact_model_init(&dr.cm, &cp, &e), DEM_OK);
+	dr.disk.x[1] = H + R;   /* touching at t = 0 */
+	dr.disk.v[1] = -v0;
+	dr.disk.R = R;
+	dr.disk.kn = k;
+	dr.M = M;
+	dr.ns = dem_mesh2_top_segments(&m, -4 * b, 4 * b, NULL);
+	uint32_t *seg = malloc(2 * dr.ns * sizeof *seg);
+	dem_mesh2_top_segments(&m, -4 * b, 4 * b, seg);
+	dr.seg = seg;
+	dr.X = m.X;
+	dr.st = calloc(dr.ns, sizeof *dr.st);
+	dr.t_on = -1;
+	dem_fe2_set_load(fe, drop_hook, &dr);
+	while (dem_fe2_time(fe) < 1.3 * tc && !(dr.t_on >= 0 && dr.disk.v[1] > 0 && dr.t_off < dem_fe2_time(fe) - 0.05 * tc))
+		step(fe, 0);
+	double ef = dr.Fmax / Fc - 1, et = (dr.t_off - dr.t_on) / tc - 1;
+	double cb = dr.uw / dr.Fmax, Fs, ts;
+	series_impact(k, cb, M, v0, tc, &Fs, &ts);
+	double sf = dr.Fmax / Fs - 1, st = (dr.t_off - dr.t_on) / ts - 1;
+	dem_fe_energy_t en;
+	dem_fe2_energy(fe, &en);
+	printf("# drop b/h %d: %zu elements, %ld steps; closed form d %.4g um, b %.4g um, F %.5g N/m, "
+	       "t_c %.5g us; FE/DE: F %.5g N/m (%+.2f %%), t_c %.5g us (%+.2f %%), overlap %.4g um, "
+	       "rebound %.4f v0, block energy %.3g of the disk's\n", nb, m.ne, dem_fe2_steps(fe), d * 1e6,
+	       b * 1e6, Fc, tc * 1e6, dr.Fmax, 100 * ef, (dr.t_off - dr.t_on) * 1e6, 100 * et, dr.dmax * 1e6,
+	       dr.disk.v[1] / v0, (en.kinetic + en.internal + en.hourglass) / (0.5 * M * v0 * v0));
+	printf("# drop: the block's approach at the peak %.4g um (%.2f %% of the overlap); with it in "
+	       "series: F %.5g N/m (FE/DE %+.2f %%), t_c %.5g us (%+.2f %%)\n", dr.uw * 1e6,
+	       100 * dr.uw / dr.dmax, Fs, 100 * sf, ts * 1e6, 100 * st);
+	assert_true(fabs(ef) <= 0.05);
+	assert_true(fabs(et) <= 0.05);
+	assert_true(fabs(sf) <= 0.005);
+	assert_true(fabs(st) <= 0.005);
+	free(seg), free(dr.st);
+	dem_fe2_free(fe);
+	dem_mesh2_free(&m);
+	dem_mat_free(&mat);
+}
+
+static void test_drop(void **state)
+{
+	(void)state;
+	drop_case(SLOW_CASES(10, 4));
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -602,6 +799,7 @@ int main(void)
 		cmocka_unit_test(test_wave),
 		cmocka_unit_test(test_lame),
 		cmocka_unit_test(test_axis),
+		cmocka_unit_test(test_drop),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
