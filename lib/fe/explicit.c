@@ -31,9 +31,9 @@
 #include <omp.h>
 #include <stdlib.h>
 #include <string.h>
-#include <zlib.h>
 
 #include "core/cost.h"
+#include "fe/ckpt.h"
 #include "fe/hex8.h"
 #include "fe/simd.h"
 
@@ -1221,18 +1221,12 @@ void dem_fe_stats(const dem_fe_t *fe, dem_fe_stats_t *s)
 #define CKPT_VERSION 1
 #define CKPT_MAXITEM 32
 
-typedef struct ckpt_item {
-	const char *name;
-	void *p;
-	size_t size;
-} ckpt_item_t;
-
-static int ckpt_items(const dem_fe_t *cfe, ckpt_item_t *it)
+static int ckpt_items(const dem_fe_t *cfe, dem_ckpt_item_t *it)
 {
 	dem_fe_t *fe = (dem_fe_t *)cfe;  /* saved from, or loaded into */
 	size_t nn = fe->nn, ne = fe->ne, nl = fe->nblk * NB, d = sizeof(double);
 	int full = fe->o.rule == DEM_FE_FULL, n = 0;
-#define ITEM(nm, ptr, sz) (it[n++] = (ckpt_item_t){ nm, ptr, sz })
+#define ITEM(nm, ptr, sz) (it[n++] = (dem_ckpt_item_t){ nm, ptr, sz })
 	ITEM("x", fe->x, 3 * nn * d);
 	ITEM("v", fe->v, 3 * nn * d);
 	ITEM("fi", fe->fi, 3 * nn * d);
@@ -1278,22 +1272,11 @@ typedef struct ckpt_head {
 
 static const char ckpt_magic[8] = "DEMFE\0ck";
 
-static uLong crc_add(uLong c, const void *p, size_t n)
-{
-	const Bytef *b = p;
-	while (n > 0) {
-		uInt k = n > (1u << 30) ? 1u << 30 : (uInt)n;
-		c = crc32(c, b, k);
-		b += k, n -= k;
-	}
-	return c;
-}
-
 static void ckpt_head(const dem_fe_t *fe, ckpt_head_t *h)
 {
 	const dem_mesh_t *m = fe->mesh;
 	const dem_mat_t *a = fe->mat;
-	ckpt_item_t it[CKPT_MAXITEM];
+	dem_ckpt_item_t it[CKPT_MAXITEM];
 	memset(h, 0, sizeof *h);
 	memcpy(h->magic, ckpt_magic, sizeof h->magic);
 	h->version = CKPT_VERSION;
@@ -1303,64 +1286,33 @@ static void ckpt_head(const dem_fe_t *fe, ckpt_head_t *h)
 	h->rule = (int32_t)fe->o.rule, h->large = fe->o.large, h->hg = fe->hg;
 	h->dt_factor = fe->o.dt_factor, h->damping = fe->o.damping;
 	h->hg_stiff = fe->o.hg_stiff, h->hg_visc = fe->o.hg_visc;
-	uLong c = crc32(0, Z_NULL, 0);
-	c = crc_add(c, m->X, 3 * m->nn * sizeof *m->X);
-	c = crc_add(c, m->hex, 8 * m->ne * sizeof *m->hex);
+	uint32_t c = dem_ckpt_crc(0, m->X, 3 * m->nn * sizeof *m->X);
+	c = dem_ckpt_crc(c, m->hex, 8 * m->ne * sizeof *m->hex);
 	if (m->fix)
-		c = crc_add(c, m->fix, m->nn);
+		c = dem_ckpt_crc(c, m->fix, m->nn);
 	if (m->ntie)
-		c = crc_add(c, m->tie, 2 * m->ntie * sizeof *m->tie);
-	h->mesh_crc = (uint32_t)c;
-	double mp[7] = { a->E, a->nu, a->rho, (double)a->flags, (double)a->nhard, a->rate_m, a->rate_ref };
-	c = crc_add(crc32(0, Z_NULL, 0), mp, sizeof mp);
-	if (a->nhard > 0) {
-		c = crc_add(c, a->hep, (size_t)a->nhard * sizeof *a->hep);
-		c = crc_add(c, a->hsy, (size_t)a->nhard * sizeof *a->hsy);
-	}
-	if (a->flags & DEM_MAT_GENERAL) {
-		/* the laws beyond the piecewise linear curve (linear and table
-		 * materials keep the checksum of earlier checkpoints) */
-		double gp[11 + 2 * DEM_MAT_NKIN] = {
-			(double)a->law, a->voce_Q, a->voce_b, a->voce_H, a->jc_A, a->jc_B, a->jc_n,
-			(double)a->rate_law, a->cs_D, a->cs_ip, a->jc_C
-		};
-		for (int i = 0; i < a->nkin; i++) {
-			gp[11 + 2 * i] = a->kin_C[i];
-			gp[12 + 2 * i] = a->kin_gamma[i];
-		}
-		c = crc_add(c, gp, sizeof gp);
-	}
-	h->mat_crc = (uint32_t)c;
+		c = dem_ckpt_crc(c, m->tie, 2 * m->ntie * sizeof *m->tie);
+	h->mesh_crc = c;
+	h->mat_crc = dem_ckpt_mat_crc(a);
 }
 
 int dem_fe_save(const dem_fe_t *fe, FILE *f, dem_error_t *e)
 {
 	ckpt_head_t h;
-	ckpt_item_t it[CKPT_MAXITEM];
+	dem_ckpt_item_t it[CKPT_MAXITEM];
 	int n = ckpt_items(fe, it);
 	ckpt_head(fe, &h);
-	uLong c = crc_add(crc32(0, Z_NULL, 0), &h, sizeof h);
-	int bad = fwrite(&h, sizeof h, 1, f) != 1;
-	for (int i = 0; i < n && !bad; i++) {
-		uint64_t sz = it[i].size;
-		c = crc_add(c, &sz, sizeof sz);
-		c = crc_add(c, it[i].p, it[i].size);
-		bad = fwrite(&sz, sizeof sz, 1, f) != 1 || fwrite(it[i].p, 1, it[i].size, f) != it[i].size;
-	}
-	uint32_t crc = (uint32_t)c;
-	if (bad || fwrite(&crc, sizeof crc, 1, f) != 1)
-		return dem_error_set(e, DEM_EIO, "checkpoint: write error");
-	return DEM_OK;
+	return dem_ckpt_write(f, &h, sizeof h, it, n, e);
 }
 
 int dem_fe_load(dem_fe_t *fe, FILE *f, dem_error_t *e)
 {
 	ckpt_head_t h, w;
-	ckpt_item_t it[CKPT_MAXITEM];
+	dem_ckpt_item_t it[CKPT_MAXITEM];
 	int n = ckpt_items(fe, it);
 	ckpt_head(fe, &w);
-	if (fread(&h, sizeof h, 1, f) != 1)
-		return dem_error_set(e, DEM_EINPUT, "checkpoint: truncated (no model header)");
+	if (dem_ckpt_read_head(f, &h, sizeof h, e))
+		return e->code;
 	if (memcmp(h.magic, ckpt_magic, sizeof h.magic))
 		return dem_error_set(e, DEM_EINPUT, "checkpoint: not a model checkpoint (bad magic)");
 	if (h.version != w.version)
@@ -1379,24 +1331,8 @@ int dem_fe_load(dem_fe_t *fe, FILE *f, dem_error_t *e)
 				     "rule, strain, time step factor, damping or hourglass control)");
 	if (h.mat_crc != w.mat_crc)
 		return dem_error_set(e, DEM_EINPUT, "checkpoint: of another material");
-	uLong c = crc_add(crc32(0, Z_NULL, 0), &h, sizeof h);
-	for (int i = 0; i < n; i++) {
-		uint64_t sz;
-		if (fread(&sz, sizeof sz, 1, f) != 1)
-			return dem_error_set(e, DEM_EINPUT, "checkpoint: truncated (at '%s')", it[i].name);
-		if (sz != it[i].size)
-			return dem_error_set(e, DEM_EINPUT, "checkpoint: '%s' has %llu bytes, expected %zu",
-					     it[i].name, (unsigned long long)sz, it[i].size);
-		if (fread(it[i].p, 1, it[i].size, f) != it[i].size)
-			return dem_error_set(e, DEM_EINPUT, "checkpoint: truncated (in '%s')", it[i].name);
-		c = crc_add(c, &sz, sizeof sz);
-		c = crc_add(c, it[i].p, it[i].size);
-	}
-	uint32_t crc;
-	if (fread(&crc, sizeof crc, 1, f) != 1)
-		return dem_error_set(e, DEM_EINPUT, "checkpoint: truncated (no checksum)");
-	if (crc != (uint32_t)c)
-		return dem_error_set(e, DEM_EINPUT, "checkpoint: corrupt (checksum mismatch)");
+	if (dem_ckpt_read_items(f, &h, sizeof h, it, n, e))
+		return e->code;
 	fe->failed = 0;
 	syc_reset(fe);
 	return DEM_OK;

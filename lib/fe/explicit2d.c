@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "core/cost.h"
+#include "fe/ckpt.h"
 
 typedef struct pload2 {
 	size_t ns, nt;
@@ -761,4 +762,122 @@ void dem_fe2_stats(const dem_fe2_t *fe, dem_fe_stats_t *s)
 	s->plastic_updates = fe->nplastic;
 	s->elem_s = fe->elem_s;
 	s->node_s = fe->node_s;
+}
+
+/* ---- Checkpoint ------------------------------------------------------------- */
+
+/* Everything dem_fe2_step reads that it wrote before (explicit.c's rule:
+ * a field added to struct dem_fe2 that carries over from step to step
+ * needs its line here, and CKPT_VERSION raised). */
+#define CKPT_VERSION 1
+#define CKPT_MAXITEM 32
+
+static int ckpt_items(const dem_fe2_t *cfe, dem_ckpt_item_t *it)
+{
+	dem_fe2_t *fe = (dem_fe2_t *)cfe;  /* saved from, or loaded into */
+	size_t nn = fe->nn, ne = fe->ne, np = ne * (size_t)fe->npt, d = sizeof(double);
+	int n = 0;
+#define ITEM(nm, ptr, sz) (it[n++] = (dem_ckpt_item_t){ nm, ptr, sz })
+	ITEM("x", fe->x, 2 * nn * d);
+	ITEM("v", fe->v, 2 * nn * d);
+	ITEM("fi", fe->fi, 2 * nn * d);
+	ITEM("sig", fe->sig, 6 * np * d);
+	ITEM("ep", fe->ep, np * d);
+	if (fe->kin)
+		ITEM("kin", fe->kin, (size_t)fe->nh * np * d);
+	if (fe->Qs)
+		ITEM("Qs", fe->Qs, 2 * ne * d);
+	if (fe->eps)
+		ITEM("eps", fe->eps, 6 * ne * d);
+	ITEM("t", &fe->t, d);
+	ITEM("dt_prev", &fe->dt_prev, d);
+	ITEM("dt_stable", &fe->dt_stable, d);
+	ITEM("steps", &fe->steps, sizeof fe->steps);
+	ITEM("T0", &fe->T0, d);
+	ITEM("wx_acc", &fe->wx_acc, d);
+	ITEM("wd_acc", &fe->wd_acc, d);
+	ITEM("eint", &fe->eint, d);
+	ITEM("epl", &fe->epl, d);
+	ITEM("ehg", &fe->ehg, d);
+	ITEM("en", &fe->en, sizeof fe->en);
+	ITEM("cycles", &fe->cycles, d);
+	ITEM("nplastic", &fe->nplastic, d);
+	ITEM("elem_s", &fe->elem_s, d);
+	ITEM("node_s", &fe->node_s, d);
+#undef ITEM
+	return n;
+}
+
+/* What the model was made from; zeroed before filling. */
+typedef struct ckpt_head {
+	char magic[8];
+	uint32_t version, nitem;
+	uint64_t nn, ne;
+	int32_t nx, ny, mode, rule, large, hg, hg_tangent, pad;
+	double thick, dt_factor, damping, hg_stiff, hg_visc;
+	uint32_t mesh_crc, mat_crc;
+} ckpt_head_t;
+
+static const char ckpt_magic[8] = "DEMFE2ck";
+
+static void ckpt_head(const dem_fe2_t *fe, ckpt_head_t *h)
+{
+	const dem_mesh2_t *m = fe->mesh;
+	dem_ckpt_item_t it[CKPT_MAXITEM];
+	memset(h, 0, sizeof *h);
+	memcpy(h->magic, ckpt_magic, sizeof h->magic);
+	h->version = CKPT_VERSION;
+	h->nitem = (uint32_t)ckpt_items(fe, it);
+	h->nn = fe->nn, h->ne = fe->ne;
+	h->nx = m->nx, h->ny = m->ny;
+	h->mode = (int32_t)fe->o.mode, h->rule = (int32_t)fe->o.rule, h->large = fe->o.large;
+	h->hg = fe->hg, h->hg_tangent = fe->o.hg_tangent;
+	h->thick = fe->o.mode == DEM_QUAD4_PLANE ? fe->o.thick : 0;
+	h->dt_factor = fe->o.dt_factor, h->damping = fe->o.damping;
+	h->hg_stiff = fe->o.hg_stiff, h->hg_visc = fe->o.hg_visc;
+	uint32_t c = dem_ckpt_crc(0, m->X, 2 * m->nn * sizeof *m->X);
+	c = dem_ckpt_crc(c, m->quad, 4 * m->ne * sizeof *m->quad);
+	h->mesh_crc = dem_ckpt_crc(c, m->fix, m->nn);
+	h->mat_crc = dem_ckpt_mat_crc(fe->mat);
+}
+
+int dem_fe2_save(const dem_fe2_t *fe, FILE *f, dem_error_t *e)
+{
+	ckpt_head_t h;
+	dem_ckpt_item_t it[CKPT_MAXITEM];
+	int n = ckpt_items(fe, it);
+	ckpt_head(fe, &h);
+	return dem_ckpt_write(f, &h, sizeof h, it, n, e);
+}
+
+int dem_fe2_load(dem_fe2_t *fe, FILE *f, dem_error_t *e)
+{
+	ckpt_head_t h, w;
+	dem_ckpt_item_t it[CKPT_MAXITEM];
+	int n = ckpt_items(fe, it);
+	ckpt_head(fe, &w);
+	if (dem_ckpt_read_head(f, &h, sizeof h, e))
+		return e->code;
+	if (memcmp(h.magic, ckpt_magic, sizeof h.magic))
+		return dem_error_set(e, DEM_EINPUT, "checkpoint: not a 2D model checkpoint (bad magic)");
+	if (h.version != w.version)
+		return dem_error_set(e, DEM_EINPUT, "checkpoint: model version %u, expected %u",
+				     (unsigned)h.version, (unsigned)w.version);
+	if (h.nn != w.nn || h.ne != w.ne || h.nx != w.nx || h.ny != w.ny)
+		return dem_error_set(e, DEM_EINPUT, "checkpoint: of a mesh of %d x %d elements (%llu "
+				     "nodes), this one is %d x %d (%zu nodes)", (int)h.nx, (int)h.ny,
+				     (unsigned long long)h.nn, w.nx, w.ny, fe->nn);
+	if (h.mesh_crc != w.mesh_crc)
+		return dem_error_set(e, DEM_EINPUT, "checkpoint: of another mesh (same sizes, other "
+				     "coordinates or constraints)");
+	if (h.mode != w.mode || h.rule != w.rule || h.large != w.large || h.hg != w.hg ||
+	    h.hg_tangent != w.hg_tangent || h.nitem != w.nitem || memcmp(&h.thick, &w.thick, 5 * sizeof(double)))
+		return dem_error_set(e, DEM_EINPUT, "checkpoint: of other run options (mode, thickness, "
+				     "integration rule, strain, time step factor, damping or hourglass control)");
+	if (h.mat_crc != w.mat_crc)
+		return dem_error_set(e, DEM_EINPUT, "checkpoint: of another material");
+	if (dem_ckpt_read_items(f, &h, sizeof h, it, n, e))
+		return e->code;
+	fe->failed = 0;
+	return DEM_OK;
 }

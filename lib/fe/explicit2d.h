@@ -190,4 +190,15 @@ void dem_fe2_energy(const dem_fe2_t *fe, dem_fe_energy_t *en);
 /* Work counters (explicit.h's record; node_s and elem_s wall clock). */
 void dem_fe2_stats(const dem_fe2_t *fe, dem_fe_stats_t *s);
 
+/* Checkpoint: as dem_fe_save / dem_fe_load (explicit.h), the whole
+ * time-stepping state, for a model made by dem_fe2_create from the same
+ * mesh, material and options; stepping then continues bit for bit as the
+ * model that was saved.  Loads (pressures, the hook) are not state: give
+ * them again.  Its own magic: a 3D checkpoint is refused, and the other
+ * way round.  DEM_EINPUT for a checkpoint of another mesh, material or
+ * options, or a truncated or corrupt one; DEM_EIO for a write error.
+ * After a failed load the model's state is undefined: free it. */
+int dem_fe2_save(const dem_fe2_t *fe, FILE *f, dem_error_t *e);
+int dem_fe2_load(dem_fe2_t *fe, FILE *f, dem_error_t *e);
+
 #endif

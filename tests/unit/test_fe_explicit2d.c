@@ -594,6 +594,161 @@ static void test_axis(void **state)
 	axis_case(DEM_FE_FULL, 0);
 }
 
+/* ---- Checkpoint ---------------------------------------------------------------- */
+
+/* A plastic block struck at its top (large strain, both rules, kinematic
+ * hardening for the back-stresses), saved after 150 steps and run on for
+ * 150: a fresh model loaded from the checkpoint runs the same 150 steps
+ * bit for bit (coordinates, velocities, fields, energies).  Refused: a 3D
+ * model's checkpoint (bad magic), another mesh, other options, another
+ * material, a truncated and a corrupt block. */
+static void plastic(dem_mat_t *m, double sy0)
+{
+	dem_mat_param_t p = { .E = 68 * GPA, .nu = 0.33, .rho = 2700, .sy0 = sy0, .H = 120 * MPA,
+			      .nkin = 1, .kin_C = { 20 * GPA }, .kin_gamma = { 100 } };
+	dem_error_t e = { 0 };
+	assert_int_equal(dem_mat_init(m, &p, &e), DEM_OK);
+}
+
+static dem_fe2_t *struck(const dem_mesh2_t *m, const dem_mat_t *mat, dem_fe_rule_t rule, double alpha)
+{
+	dem_fe2_t *fe = model(m, mat, DEM_QUAD4_AXISYM, rule, 1, alpha);
+	double *v = dem_fe2_velocity(fe);
+	for (int i = 0; i <= 2; i++)
+		v[2 * dem_mesh2_node(m, i, m->ny) + 1] = -100;
+	return fe;
+}
+
+static void same_state(dem_fe2_t *a, dem_fe2_t *b, const dem_mesh2_t *m)
+{
+	assert_memory_equal(dem_fe2_coords(a), dem_fe2_coords(b), 2 * m->nn * sizeof(double));
+	assert_memory_equal(dem_fe2_velocity(a), dem_fe2_velocity(b), 2 * m->nn * sizeof(double));
+	double *s1 = malloc(13 * m->ne * sizeof *s1), *s2 = malloc(13 * m->ne * sizeof *s2);
+	dem_fe2_fields(a, s1, s1 + 6 * m->ne, s1 + 12 * m->ne);
+	dem_fe2_fields(b, s2, s2 + 6 * m->ne, s2 + 12 * m->ne);
+	assert_memory_equal(s1, s2, 13 * m->ne * sizeof *s1);
+	dem_fe_energy_t e1, e2;
+	dem_fe2_energy(a, &e1);
+	dem_fe2_energy(b, &e2);
+	assert_memory_equal(&e1, &e2, sizeof e1);
+	free(s1), free(s2);
+}
+
+static void ckpt_case(dem_fe_rule_t rule)
+{
+	dem_mesh2_t m;
+	dem_mat_t mat;
+	plastic(&mat, 157 * MPA);
+	rect(&m, 8, 6, 0, 0, 4e-3, 3e-3);
+	dem_bc_t bc[4] = { DEM_BC_FREE, DEM_BC_NORMAL, DEM_BC_FIXED, DEM_BC_FREE };
+	dem_mesh2_set_bc(&m, bc);
+	dem_fe2_t *fe = struck(&m, &mat, rule, 1e5);
+	for (int i = 0; i < 150; i++)
+		step(fe, 0);
+	FILE *f = tmpfile();
+	assert_non_null(f);
+	dem_error_t e = { 0 };
+	assert_int_equal(dem_fe2_save(fe, f, &e), DEM_OK);
+	long size = ftell(f);
+	for (int i = 0; i < 150; i++)
+		step(fe, 0);
+	dem_fe2_t *g = struck(&m, &mat, rule, 1e5);
+	rewind(f);
+	assert_int_equal(dem_fe2_load(g, f, &e), DEM_OK);
+	for (int i = 0; i < 150; i++)
+		step(g, 0);
+	same_state(fe, g, &m);
+	double *ep = malloc(m.ne * sizeof *ep), epmax = 0;
+	dem_fe2_fields(fe, NULL, NULL, ep);
+	for (size_t el = 0; el < m.ne; el++)
+		epmax = fmax(epmax, ep[el]);
+	printf("# checkpoint rule %d: %ld bytes, resumed bit for bit over 150 steps (ep max %.3g)\n",
+	       rule, size, epmax);
+	assert_true(epmax > 0.01);
+	free(ep);
+	dem_fe2_free(g);
+
+	/* refusals */
+	dem_fe2_t *o;
+	dem_mesh2_t m2;
+	rect(&m2, 8, 6, 0, 0, 4e-3, 3.1e-3);
+	dem_mesh2_set_bc(&m2, bc);
+	o = struck(&m2, &mat, rule, 1e5);
+	rewind(f);
+	dem_error_clear(&e);
+	assert_int_equal(dem_fe2_load(o, f, &e), DEM_EINPUT);
+	assert_non_null(strstr(e.msg, "another mesh"));
+	dem_fe2_free(o);
+	o = struck(&m, &mat, rule, 2e5);
+	rewind(f);
+	dem_error_clear(&e);
+	assert_int_equal(dem_fe2_load(o, f, &e), DEM_EINPUT);
+	assert_non_null(strstr(e.msg, "other run options"));
+	dem_fe2_free(o);
+	dem_mat_t mat2;
+	plastic(&mat2, 160 * MPA);
+	o = struck(&m, &mat2, rule, 1e5);
+	rewind(f);
+	dem_error_clear(&e);
+	assert_int_equal(dem_fe2_load(o, f, &e), DEM_EINPUT);
+	assert_non_null(strstr(e.msg, "another material"));
+	dem_fe2_free(o);
+	dem_mat_free(&mat2);
+	/* truncated, corrupt */
+	char *buf = malloc((size_t)size);
+	rewind(f);
+	assert_int_equal(fread(buf, 1, (size_t)size, f), (size_t)size);
+	for (int k = 0; k < 2; k++) {
+		FILE *t = tmpfile();
+		if (k == 0) {
+			fwrite(buf, 1, (size_t)size / 2, t);
+		} else {
+			buf[size / 2] ^= 1;
+			fwrite(buf, 1, (size_t)size, t);
+		}
+		rewind(t);
+		o = struck(&m, &mat, rule, 1e5);
+		dem_error_clear(&e);
+		assert_int_equal(dem_fe2_load(o, t, &e), DEM_EINPUT);
+		assert_non_null(strstr(e.msg, k ? "corrupt" : "truncated"));
+		dem_fe2_free(o);
+		fclose(t);
+	}
+	free(buf);
+	fclose(f);
+	/* a 3D model's checkpoint */
+	dem_mesh_t m3;
+	dem_axis_t ax[3] = { { 0, 1e-3, 0, 1e-3, 0.5e-3, 1, 0 }, { 0, 1e-3, 0, 1e-3, 0.5e-3, 1, 0 },
+			     { 0, 1e-3, 0, 1e-3, 0.5e-3, 1, 0 } };
+	assert_int_equal(dem_mesh_box(&m3, ax, &e), DEM_OK);
+	dem_fe_opts_t o3;
+	dem_fe_opts_default(&o3);
+	dem_fe_t *f3;
+	assert_int_equal(dem_fe_create(&f3, &m3, &mat, &o3, &e), DEM_OK);
+	f = tmpfile();
+	assert_int_equal(dem_fe_save(f3, f, &e), DEM_OK);
+	rewind(f);
+	o = struck(&m, &mat, rule, 1e5);
+	dem_error_clear(&e);
+	assert_int_equal(dem_fe2_load(o, f, &e), DEM_EINPUT);
+	assert_non_null(strstr(e.msg, "bad magic"));
+	dem_fe2_free(o);
+	fclose(f);
+	dem_fe_free(f3);
+	dem_mesh_free(&m3);
+	dem_mesh2_free(&m2);
+	dem_fe2_free(fe);
+	dem_mesh2_free(&m);
+	dem_mat_free(&mat);
+}
+
+static void test_checkpoint(void **state)
+{
+	(void)state;
+	ckpt_case(DEM_FE_1PT);
+	ckpt_case(DEM_FE_FULL);
+}
+
 /* ---- 5. A rigid disk dropped on the block (2D Hertz) ------------------------- */
 
 /* The closed form.  Ch. 3 writes its 2D laws in the single form of
@@ -799,6 +954,7 @@ int main(void)
 		cmocka_unit_test(test_wave),
 		cmocka_unit_test(test_lame),
 		cmocka_unit_test(test_axis),
+		cmocka_unit_test(test_checkpoint),
 		cmocka_unit_test(test_drop),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
