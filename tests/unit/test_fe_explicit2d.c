@@ -594,6 +594,124 @@ static void test_axis(void **state)
 	axis_case(DEM_FE_FULL, 0);
 }
 
+/* ---- Failures ----------------------------------------------------------------- */
+
+/* A 2 x 2 block (large strain) whose top centre node is driven down at
+ * 2000 m/s at a fixed step: the two elements under it collapse.  The step
+ * returns DEM_ENUMERIC naming the first that fails (element 2 at (0, 1),
+ * or 0 at (0, 0) for the 2x2 rule on the axis) and the time; nothing is
+ * NaN and the next step fails the same way.  A load hook that
+ * fails stops the step before anything changes. */
+static int hook_fail(void *ctx, double t, double dt, const double *x, const double *v, double *f,
+		     dem_error_t *e)
+{
+	(void)ctx, (void)t, (void)dt, (void)x, (void)v;
+	f[0] = 1;
+	return dem_error_set(e, DEM_ENUMERIC, "contact: shot 3 lost");
+}
+
+static void inverted_case(dem_quad4_mode_t mode, dem_fe_rule_t rule)
+{
+	dem_mesh2_t m;
+	dem_mat_t mat;
+	steel(&mat);
+	rect(&m, 2, 2, 0, 0, 2e-3, 2e-3);
+	dem_bc_t bc[4] = { DEM_BC_NORMAL, DEM_BC_NORMAL, DEM_BC_FIXED, DEM_BC_FREE };
+	dem_mesh2_set_bc(&m, bc);
+	size_t nc = dem_mesh2_node(&m, 1, 2);
+	m.fix[nc] = DEM_FIX_Y;
+	dem_fe2_t *fe = model(&m, &mat, mode, rule, 1, 0);
+	dem_fe2_velocity(fe)[2 * nc + 1] = -2000;
+	dem_error_t e = { 0 };
+	int rc = DEM_OK, it;
+	double dt = dem_fe2_dt(fe);
+	for (it = 0; it < 200 && rc == DEM_OK; it++)
+		rc = dem_fe2_step(fe, dt, &e);
+	printf("# inverted mode %d rule %d after %d steps: %s\n", mode, rule, it, e.msg);
+	assert_int_equal(rc, DEM_ENUMERIC);
+	/* one of the elements at the node, named with its grid indices */
+	unsigned el;
+	int gi, gj;
+	assert_int_equal(sscanf(e.msg, "element %u (i, j = %d, %d)", &el, &gi, &gj), 3);
+	assert_true((int)el == gi + 2 * gj);
+	assert_true(el < 4);
+	char tbuf[64];
+	snprintf(tbuf, sizeof tbuf, "t = %.9g s", dem_fe2_time(fe));
+	assert_non_null(strstr(e.msg, tbuf));
+	double *sig = malloc(6 * m.ne * sizeof *sig), *eps = malloc(6 * m.ne * sizeof *eps);
+	double *ep = malloc(m.ne * sizeof *ep), *u = malloc(2 * m.nn * sizeof *u);
+	dem_fe2_fields(fe, sig, eps, ep);
+	dem_fe2_displacements(fe, u);
+	dem_fe_energy_t en;
+	dem_fe2_energy(fe, &en);
+	assert_true(all_finite(sig, 6 * m.ne) && all_finite(eps, 6 * m.ne) && all_finite(ep, m.ne));
+	assert_true(all_finite(u, 2 * m.nn) && all_finite(dem_fe2_velocity(fe), 2 * m.nn));
+	assert_true(all_finite(&en.kinetic, 7));
+	dem_error_t e2 = { 0 };
+	assert_int_equal(dem_fe2_step(fe, 0, &e2), DEM_ENUMERIC);
+	assert_string_equal(e.msg, e2.msg);
+	free(sig), free(eps), free(ep), free(u);
+	dem_fe2_free(fe);
+
+	/* the failing hook */
+	fe = model(&m, &mat, mode, rule, 0, 0);
+	dem_fe2_set_load(fe, hook_fail, NULL);
+	dem_error_clear(&e);
+	assert_int_equal(dem_fe2_step(fe, 0, &e), DEM_ENUMERIC);
+	assert_string_equal(e.msg, "contact: shot 3 lost");
+	assert_int_equal(dem_fe2_steps(fe), 0);
+	assert_true(dem_fe2_time(fe) == 0);
+	dem_fe2_set_load(fe, NULL, NULL);
+	step(fe, 0);
+	for (size_t i = 0; i < 2 * m.nn; i++)
+		assert_true(dem_fe2_velocity(fe)[i] == 0);
+	dem_fe2_free(fe);
+	dem_mesh2_free(&m);
+	dem_mat_free(&mat);
+}
+
+static void test_inverted(void **state)
+{
+	(void)state;
+	for (int mode = 0; mode < 2; mode++)
+		for (int rule = 0; rule < 2; rule++)
+			inverted_case((dem_quad4_mode_t)mode, (dem_fe_rule_t)rule);
+}
+
+/* Bad options and meshes: DEM_EINPUT with a message. */
+static void test_refused(void **state)
+{
+	(void)state;
+	dem_mesh2_t m;
+	dem_mat_t mat;
+	steel(&mat);
+	rect(&m, 2, 2, -1e-3, 0, 2e-3, 2e-3);
+	dem_fe2_opts_t o;
+	dem_fe2_t *fe = (dem_fe2_t *)&o;
+	dem_error_t e = { 0 };
+	dem_fe2_opts_default(&o);
+	o.mode = DEM_QUAD4_AXISYM;   /* a node at r < 0 */
+	assert_int_equal(dem_fe2_create(&fe, &m, &mat, &o, &e), DEM_EINPUT);
+	assert_null(fe);
+	assert_non_null(strstr(e.msg, "r = -0.001 < 0"));
+	dem_fe2_opts_default(&o);
+	o.thick = 0;
+	dem_error_clear(&e);
+	assert_int_equal(dem_fe2_create(&fe, &m, &mat, &o, &e), DEM_EINPUT);
+	assert_non_null(strstr(e.msg, "thickness"));
+	dem_fe2_opts_default(&o);
+	o.dt_factor = 1.5;
+	dem_error_clear(&e);
+	assert_int_equal(dem_fe2_create(&fe, &m, &mat, &o, &e), DEM_EINPUT);
+	dem_fe2_opts_default(&o);
+	m.X[2 * dem_mesh2_node(&m, 1, 1)] = 5e-3;   /* beyond the right edge: element 1 folds */
+	dem_error_clear(&e);
+	assert_int_equal(dem_fe2_create(&fe, &m, &mat, &o, &e), DEM_EINPUT);
+	assert_non_null(strstr(e.msg, "element 1 (i, j = 1, 0)"));
+	dem_mesh2_free(&m);
+	dem_mat_free(&mat);
+}
+
 /* ---- Checkpoint ---------------------------------------------------------------- */
 
 /* A plastic block struck at its top (large strain, both rules, kinematic
@@ -954,6 +1072,8 @@ int main(void)
 		cmocka_unit_test(test_wave),
 		cmocka_unit_test(test_lame),
 		cmocka_unit_test(test_axis),
+		cmocka_unit_test(test_inverted),
+		cmocka_unit_test(test_refused),
 		cmocka_unit_test(test_checkpoint),
 		cmocka_unit_test(test_drop),
 	};
