@@ -177,7 +177,7 @@ clean:
 # (examples/NAME/X.yaml -> $(pkgdatadir)/scenes/NAME/X.yaml).
 HEADERS_PRIVATE := lib/contact/vec3.h lib/detect/dcell_impl.h \
                    lib/detect/dcell_sweep.h lib/detect/tree_impl.h \
-                   lib/fe/simd.h lib/mesh/hex.h
+                   lib/fe/simd.h lib/fe/ckpt.h lib/fe/cdiff.h lib/mesh/hex.h
 HEADERS  := $(filter-out $(HEADERS_PRIVATE),$(sort $(wildcard lib/*/*.h)))
 SCENES   := $(sort $(wildcard examples/*/*.yaml examples/verification/laws-mat/*.yaml))
 # $(call in_dir,DIR/,FILES): the FILES right in DIR (not below it)

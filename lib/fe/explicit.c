@@ -31,9 +31,10 @@
 #include <omp.h>
 #include <stdlib.h>
 #include <string.h>
-#include <zlib.h>
 
 #include "core/cost.h"
+#include "fe/cdiff.h"
+#include "fe/ckpt.h"
 #include "fe/hex8.h"
 #include "fe/simd.h"
 
@@ -63,7 +64,6 @@ typedef long long lvec4 __attribute__((vector_size(4 * sizeof(double))));
  * fails to forward from) */
 typedef double uvec4 __attribute__((vector_size(4 * sizeof(double)), aligned(8), may_alias));
 
-enum { S_T, S_WXA, S_WXB, S_WDA, S_WDB, S_N };   /* node-loop sums */
 enum { E_INT, E_PL, E_HG, E_NPL, E_N };          /* element-loop sums */
 
 typedef struct slab {
@@ -114,7 +114,7 @@ struct dem_fe {
 	int nslab;
 	slab_t *slab;
 	int *slab_of_k;
-	double chunk[NCHUNK][S_N];
+	double chunk[NCHUNK][DEM_CD_N];
 	/* loads */
 	pload_t *pl;
 	int npl;
@@ -125,7 +125,7 @@ struct dem_fe {
 	double t, dt_prev, dt_stable;
 	long steps;
 	/* energies */
-	double T0, wx_acc, wd_acc, eint, epl, ehg;
+	dem_cd_work_t w;
 	dem_fe_energy_t en;
 	/* failure */
 	int failed;
@@ -435,15 +435,8 @@ nomem:
 int dem_fe_add_pressure(dem_fe_t *fe, size_t nquad, const uint32_t *quad,
 			size_t nt, const double *t, const double *p, dem_error_t *e)
 {
-	if (nt < 1)
-		return dem_error_set(e, DEM_EINPUT, "pressure: empty time history");
-	for (size_t i = 0; i < nt; i++) {
-		if (!isfinite(t[i]) || !isfinite(p[i]))
-			return dem_error_set(e, DEM_EINPUT, "pressure: time history point %zu is not finite", i);
-		if (i > 0 && t[i] < t[i - 1])
-			return dem_error_set(e, DEM_EINPUT, "pressure: times must not decrease "
-					     "(point %zu: %g after %g)", i, t[i], t[i - 1]);
-	}
+	if (dem_cd_table_check(nt, t, p, e))
+		return e->code;
 	for (size_t q = 0; q < 4 * nquad; q++)
 		if (quad[q] >= fe->nn)
 			return dem_error_set(e, DEM_EINPUT, "pressure: face %zu names node %u of %zu",
@@ -499,29 +492,9 @@ void dem_fe_set_load(dem_fe_t *fe, dem_fe_load_fn fn, void *ctx)
 	fe->hctx = ctx;
 }
 
-static double history(const pload_t *pl, double t)
-{
-	size_t n = pl->nt;
-	if (t < pl->t[0])
-		return pl->p[0];
-	if (t >= pl->t[n - 1])
-		return pl->p[n - 1];
-	/* the last point with t_i <= t: a repeated time takes its right value */
-	size_t lo = 0, hi = n - 1;
-	while (hi - lo > 1) {
-		size_t mid = (lo + hi) / 2;
-		if (pl->t[mid] <= t)
-			lo = mid;
-		else
-			hi = mid;
-	}
-	double w = (t - pl->t[lo]) / (pl->t[hi] - pl->t[lo]);
-	return pl->p[lo] + w * (pl->p[hi] - pl->p[lo]);
-}
-
 static void apply_pressure(dem_fe_t *fe, const pload_t *pl, double t)
 {
-	double p = history(pl, t);
+	double p = dem_cd_history(pl->nt, pl->t, pl->p, t);
 	if (p == 0)
 		return;
 	const double *x = fe->o.large ? fe->x : fe->mesh->X;
@@ -552,17 +525,8 @@ static void apply_pressure(dem_fe_t *fe, const pload_t *pl, double t)
 
 /* ---- Node loop ------------------------------------------------------------ */
 
-typedef struct coef {
-	double dt, dtp;      /* dt_{n+1}, dt_n */
-	double co, cf, rden; /* v+ = (co v- + cf F / m) rden */
-	double w1, w0;       /* v_n = w1 v+ + w0 v- (Eq. 1.3) */
-	double k0, k1;       /* kinetic energy 1/2 m (k0 v- + k1 v+) v+ */
-	double rdth;         /* 1 / dt_{n+1/2} */
-	double alpha;
-} coef_t;
-
-static inline __attribute__((always_inline)) void node_range(dem_fe_t *fe, const coef_t *c, size_t n0, size_t n1,
-			      double sum[S_N], const int ext)
+static inline __attribute__((always_inline)) void node_range(dem_fe_t *fe, const dem_cd_coef_t *c, size_t n0, size_t n1,
+			      double sum[DEM_CD_N], const int ext)
 {
 	const uint8_t *fix = fe->fix;
 	double *restrict x = fe->x, *restrict v = fe->v, *restrict fi = fe->fi;
@@ -598,15 +562,15 @@ static inline __attribute__((always_inline)) void node_range(dem_fe_t *fe, const
 				fx[d] = 0;
 		}
 	}
-	sum[S_T] = 0.5 * T;
-	sum[S_WXA] = 0.5 * wxa;
-	sum[S_WXB] = 0.5 * wxb;
-	sum[S_WDA] = 0.5 * wda;
-	sum[S_WDB] = 0.5 * wdb;
+	sum[DEM_CD_T] = 0.5 * T;
+	sum[DEM_CD_WXA] = 0.5 * wxa;
+	sum[DEM_CD_WXB] = 0.5 * wxb;
+	sum[DEM_CD_WDA] = 0.5 * wda;
+	sum[DEM_CD_WDB] = 0.5 * wdb;
 }
 
 SIMD_CLONES
-static void node_chunk(dem_fe_t *fe, const coef_t *c, int ch)
+static void node_chunk(dem_fe_t *fe, const dem_cd_coef_t *c, int ch)
 {
 	size_t n0 = fe->nn * (size_t)ch / NCHUNK, n1 = fe->nn * (size_t)(ch + 1) / NCHUNK;
 	if (fe->ext)
@@ -996,31 +960,8 @@ int dem_fe_step(dem_fe_t *fe, double dt, dem_error_t *e)
 		apply_pressure(fe, &fe->pl[i], tn);
 
 	/* 2-3. velocities and coordinates (Eqs. 1.6-1.7; Eq. 1.9 to start) */
-	coef_t c;
-	double a = fe->o.damping, dtp = fe->dt_prev;
-	c.dt = dt;
-	c.dtp = dtp;
-	c.alpha = a;
-	if (fe->steps == 0) {
-		c.co = 2 - a * dt;
-		c.cf = dt;
-		c.rden = 0.5;
-		c.w1 = 0;
-		c.w0 = 1;
-		c.k0 = 2;    /* v_{-1/2} = 2 v_0 - v_{1/2} */
-		c.k1 = -1;
-		c.rdth = 2 / dt;
-	} else {
-		double dth = 0.5 * (dtp + dt);
-		c.co = 2 - a * dtp;
-		c.cf = 2 * dth;
-		c.rden = 1 / (2 + a * dt);
-		c.w1 = dt / (2 * dth);
-		c.w0 = dtp / (2 * dth);
-		c.k0 = 1;
-		c.k1 = 0;
-		c.rdth = 1 / dth;
-	}
+	dem_cd_coef_t c;
+	dem_cd_coef(&c, fe->steps, dt, fe->dt_prev, fe->o.damping);
 	int nthr = fe->nthr;
 	double w0 = dem_wall();
 	if (fe->ntie)
@@ -1033,25 +974,11 @@ int dem_fe_step(dem_fe_t *fe, double dt, dem_error_t *e)
 	double w1 = dem_wall();
 
 	/* energies at t_n */
-	double sum[S_N] = { 0 };
+	double sum[DEM_CD_N] = { 0 };
 	for (int ch = 0; ch < NCHUNK; ch++)
-		for (int k = 0; k < S_N; k++)
+		for (int k = 0; k < DEM_CD_N; k++)
 			sum[k] += fe->chunk[ch][k];
-	if (fe->steps == 0)
-		fe->T0 = sum[S_T];
-	dem_fe_energy_t *en = &fe->en;
-	en->t = tn;
-	en->kinetic = sum[S_T];
-	en->external = fe->wx_acc + sum[S_WXA];
-	en->damping = fe->wd_acc + sum[S_WDA];
-	en->internal = fe->eint;
-	en->plastic = fe->epl;
-	en->hourglass = fe->ehg;
-	en->balance = en->kinetic + en->internal + en->hourglass + en->damping - en->external - fe->T0;
-	en->scale = fmax(fmax(fmax(fabs(en->kinetic), fabs(fe->T0)), fmax(fabs(en->internal), fabs(en->hourglass))),
-			 fmax(fabs(en->damping), fabs(en->external)));
-	fe->wx_acc = en->external + sum[S_WXB];
-	fe->wd_acc = en->damping + sum[S_WDB];
+	dem_cd_energy(&fe->w, fe->steps, tn, sum, &fe->en);
 
 	/* 4. elements on x_{n+1}: even slabs, then odd slabs */
 #pragma omp parallel num_threads(nthr) if (nthr > 1)
@@ -1068,9 +995,9 @@ int dem_fe_step(dem_fe_t *fe, double dt, dem_error_t *e)
 	double dt2 = INFINITY;
 	for (int s = 0; s < fe->nslab; s++) {
 		slab_t *sl = &fe->slab[s];
-		fe->eint += sl->sum[E_INT];
-		fe->epl += sl->sum[E_PL];
-		fe->ehg += sl->sum[E_HG];
+		fe->w.eint += sl->sum[E_INT];
+		fe->w.epl += sl->sum[E_PL];
+		fe->w.ehg += sl->sum[E_HG];
 		fe->nplastic += sl->sum[E_NPL];
 		dt2 = sl->dt2 < dt2 ? sl->dt2 : dt2;
 		if (sl->bad && !bad)
@@ -1221,18 +1148,12 @@ void dem_fe_stats(const dem_fe_t *fe, dem_fe_stats_t *s)
 #define CKPT_VERSION 1
 #define CKPT_MAXITEM 32
 
-typedef struct ckpt_item {
-	const char *name;
-	void *p;
-	size_t size;
-} ckpt_item_t;
-
-static int ckpt_items(const dem_fe_t *cfe, ckpt_item_t *it)
+static int ckpt_items(const dem_fe_t *cfe, dem_ckpt_item_t *it)
 {
 	dem_fe_t *fe = (dem_fe_t *)cfe;  /* saved from, or loaded into */
 	size_t nn = fe->nn, ne = fe->ne, nl = fe->nblk * NB, d = sizeof(double);
 	int full = fe->o.rule == DEM_FE_FULL, n = 0;
-#define ITEM(nm, ptr, sz) (it[n++] = (ckpt_item_t){ nm, ptr, sz })
+#define ITEM(nm, ptr, sz) (it[n++] = (dem_ckpt_item_t){ nm, ptr, sz })
 	ITEM("x", fe->x, 3 * nn * d);
 	ITEM("v", fe->v, 3 * nn * d);
 	ITEM("fi", fe->fi, 3 * nn * d);
@@ -1250,12 +1171,12 @@ static int ckpt_items(const dem_fe_t *cfe, ckpt_item_t *it)
 	ITEM("dt_prev", &fe->dt_prev, d);
 	ITEM("dt_stable", &fe->dt_stable, d);
 	ITEM("steps", &fe->steps, sizeof fe->steps);
-	ITEM("T0", &fe->T0, d);
-	ITEM("wx_acc", &fe->wx_acc, d);
-	ITEM("wd_acc", &fe->wd_acc, d);
-	ITEM("eint", &fe->eint, d);
-	ITEM("epl", &fe->epl, d);
-	ITEM("ehg", &fe->ehg, d);
+	ITEM("T0", &fe->w.T0, d);
+	ITEM("wx_acc", &fe->w.wx_acc, d);
+	ITEM("wd_acc", &fe->w.wd_acc, d);
+	ITEM("eint", &fe->w.eint, d);
+	ITEM("epl", &fe->w.epl, d);
+	ITEM("ehg", &fe->w.ehg, d);
 	ITEM("en", &fe->en, sizeof fe->en);
 	ITEM("cycles", &fe->cycles, d);
 	ITEM("nplastic", &fe->nplastic, d);
@@ -1278,22 +1199,11 @@ typedef struct ckpt_head {
 
 static const char ckpt_magic[8] = "DEMFE\0ck";
 
-static uLong crc_add(uLong c, const void *p, size_t n)
-{
-	const Bytef *b = p;
-	while (n > 0) {
-		uInt k = n > (1u << 30) ? 1u << 30 : (uInt)n;
-		c = crc32(c, b, k);
-		b += k, n -= k;
-	}
-	return c;
-}
-
 static void ckpt_head(const dem_fe_t *fe, ckpt_head_t *h)
 {
 	const dem_mesh_t *m = fe->mesh;
 	const dem_mat_t *a = fe->mat;
-	ckpt_item_t it[CKPT_MAXITEM];
+	dem_ckpt_item_t it[CKPT_MAXITEM];
 	memset(h, 0, sizeof *h);
 	memcpy(h->magic, ckpt_magic, sizeof h->magic);
 	h->version = CKPT_VERSION;
@@ -1303,64 +1213,33 @@ static void ckpt_head(const dem_fe_t *fe, ckpt_head_t *h)
 	h->rule = (int32_t)fe->o.rule, h->large = fe->o.large, h->hg = fe->hg;
 	h->dt_factor = fe->o.dt_factor, h->damping = fe->o.damping;
 	h->hg_stiff = fe->o.hg_stiff, h->hg_visc = fe->o.hg_visc;
-	uLong c = crc32(0, Z_NULL, 0);
-	c = crc_add(c, m->X, 3 * m->nn * sizeof *m->X);
-	c = crc_add(c, m->hex, 8 * m->ne * sizeof *m->hex);
+	uint32_t c = dem_ckpt_crc(0, m->X, 3 * m->nn * sizeof *m->X);
+	c = dem_ckpt_crc(c, m->hex, 8 * m->ne * sizeof *m->hex);
 	if (m->fix)
-		c = crc_add(c, m->fix, m->nn);
+		c = dem_ckpt_crc(c, m->fix, m->nn);
 	if (m->ntie)
-		c = crc_add(c, m->tie, 2 * m->ntie * sizeof *m->tie);
-	h->mesh_crc = (uint32_t)c;
-	double mp[7] = { a->E, a->nu, a->rho, (double)a->flags, (double)a->nhard, a->rate_m, a->rate_ref };
-	c = crc_add(crc32(0, Z_NULL, 0), mp, sizeof mp);
-	if (a->nhard > 0) {
-		c = crc_add(c, a->hep, (size_t)a->nhard * sizeof *a->hep);
-		c = crc_add(c, a->hsy, (size_t)a->nhard * sizeof *a->hsy);
-	}
-	if (a->flags & DEM_MAT_GENERAL) {
-		/* the laws beyond the piecewise linear curve (linear and table
-		 * materials keep the checksum of earlier checkpoints) */
-		double gp[11 + 2 * DEM_MAT_NKIN] = {
-			(double)a->law, a->voce_Q, a->voce_b, a->voce_H, a->jc_A, a->jc_B, a->jc_n,
-			(double)a->rate_law, a->cs_D, a->cs_ip, a->jc_C
-		};
-		for (int i = 0; i < a->nkin; i++) {
-			gp[11 + 2 * i] = a->kin_C[i];
-			gp[12 + 2 * i] = a->kin_gamma[i];
-		}
-		c = crc_add(c, gp, sizeof gp);
-	}
-	h->mat_crc = (uint32_t)c;
+		c = dem_ckpt_crc(c, m->tie, 2 * m->ntie * sizeof *m->tie);
+	h->mesh_crc = c;
+	h->mat_crc = dem_ckpt_mat_crc(a);
 }
 
 int dem_fe_save(const dem_fe_t *fe, FILE *f, dem_error_t *e)
 {
 	ckpt_head_t h;
-	ckpt_item_t it[CKPT_MAXITEM];
+	dem_ckpt_item_t it[CKPT_MAXITEM];
 	int n = ckpt_items(fe, it);
 	ckpt_head(fe, &h);
-	uLong c = crc_add(crc32(0, Z_NULL, 0), &h, sizeof h);
-	int bad = fwrite(&h, sizeof h, 1, f) != 1;
-	for (int i = 0; i < n && !bad; i++) {
-		uint64_t sz = it[i].size;
-		c = crc_add(c, &sz, sizeof sz);
-		c = crc_add(c, it[i].p, it[i].size);
-		bad = fwrite(&sz, sizeof sz, 1, f) != 1 || fwrite(it[i].p, 1, it[i].size, f) != it[i].size;
-	}
-	uint32_t crc = (uint32_t)c;
-	if (bad || fwrite(&crc, sizeof crc, 1, f) != 1)
-		return dem_error_set(e, DEM_EIO, "checkpoint: write error");
-	return DEM_OK;
+	return dem_ckpt_write(f, &h, sizeof h, it, n, e);
 }
 
 int dem_fe_load(dem_fe_t *fe, FILE *f, dem_error_t *e)
 {
 	ckpt_head_t h, w;
-	ckpt_item_t it[CKPT_MAXITEM];
+	dem_ckpt_item_t it[CKPT_MAXITEM];
 	int n = ckpt_items(fe, it);
 	ckpt_head(fe, &w);
-	if (fread(&h, sizeof h, 1, f) != 1)
-		return dem_error_set(e, DEM_EINPUT, "checkpoint: truncated (no model header)");
+	if (dem_ckpt_read_head(f, &h, sizeof h, e))
+		return e->code;
 	if (memcmp(h.magic, ckpt_magic, sizeof h.magic))
 		return dem_error_set(e, DEM_EINPUT, "checkpoint: not a model checkpoint (bad magic)");
 	if (h.version != w.version)
@@ -1379,24 +1258,8 @@ int dem_fe_load(dem_fe_t *fe, FILE *f, dem_error_t *e)
 				     "rule, strain, time step factor, damping or hourglass control)");
 	if (h.mat_crc != w.mat_crc)
 		return dem_error_set(e, DEM_EINPUT, "checkpoint: of another material");
-	uLong c = crc_add(crc32(0, Z_NULL, 0), &h, sizeof h);
-	for (int i = 0; i < n; i++) {
-		uint64_t sz;
-		if (fread(&sz, sizeof sz, 1, f) != 1)
-			return dem_error_set(e, DEM_EINPUT, "checkpoint: truncated (at '%s')", it[i].name);
-		if (sz != it[i].size)
-			return dem_error_set(e, DEM_EINPUT, "checkpoint: '%s' has %llu bytes, expected %zu",
-					     it[i].name, (unsigned long long)sz, it[i].size);
-		if (fread(it[i].p, 1, it[i].size, f) != it[i].size)
-			return dem_error_set(e, DEM_EINPUT, "checkpoint: truncated (in '%s')", it[i].name);
-		c = crc_add(c, &sz, sizeof sz);
-		c = crc_add(c, it[i].p, it[i].size);
-	}
-	uint32_t crc;
-	if (fread(&crc, sizeof crc, 1, f) != 1)
-		return dem_error_set(e, DEM_EINPUT, "checkpoint: truncated (no checksum)");
-	if (crc != (uint32_t)c)
-		return dem_error_set(e, DEM_EINPUT, "checkpoint: corrupt (checksum mismatch)");
+	if (dem_ckpt_read_items(f, &h, sizeof h, it, n, e))
+		return e->code;
 	fe->failed = 0;
 	syc_reset(fe);
 	return DEM_OK;

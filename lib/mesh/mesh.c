@@ -124,15 +124,14 @@ void dem_mesh_free(dem_mesh_t *m)
 	memset(m, 0, sizeof *m);
 }
 
-int dem_mesh_box(dem_mesh_t *m, const dem_axis_t ax[3], dem_error_t *e)
+int dem_mesh_axes(const dem_axis_t *ax, int na, double **g, int *n, dem_error_t *e)
 {
 	static const char name[] = "xyz";
-	double *g[3] = {NULL, NULL, NULL};
-	int n[3], a, i, j, k;
-	size_t nn, ne, p;
+	int a;
 
-	memset(m, 0, sizeof *m);
-	for (a = 0; a < 3; a++) {
+	for (a = 0; a < na; a++)
+		g[a] = NULL;
+	for (a = 0; a < na; a++) {
 		if (dem_axis_grid(&ax[a], &g[a], &n[a], e) != DEM_OK) {
 			char msg[sizeof e->msg];
 
@@ -140,10 +139,23 @@ int dem_mesh_box(dem_mesh_t *m, const dem_axis_t ax[3], dem_error_t *e)
 			snprintf(msg, sizeof msg, "mesh %c axis:%s", name[a],
 				 e->msg + strlen("mesh axis:"));
 			memcpy(e->msg, msg, sizeof msg);
-			free(g[0]), free(g[1]), free(g[2]);
+			for (int b = 0; b < na; b++)
+				free(g[b]), g[b] = NULL;
 			return e->code;
 		}
 	}
+	return DEM_OK;
+}
+
+int dem_mesh_box(dem_mesh_t *m, const dem_axis_t ax[3], dem_error_t *e)
+{
+	double *g[3];
+	int n[3], i, j, k;
+	size_t nn, ne, p;
+
+	memset(m, 0, sizeof *m);
+	if (dem_mesh_axes(ax, 3, g, n, e) != DEM_OK)
+		return e->code;
 	nn = (size_t)(n[0] + 1) * (size_t)(n[1] + 1) * (size_t)(n[2] + 1);
 	ne = (size_t)n[0] * (size_t)n[1] * (size_t)n[2];
 	if (nn > UINT32_MAX) {

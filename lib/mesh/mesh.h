@@ -49,6 +49,11 @@ typedef struct dem_axis {
  * increasing); *n elements.  DEM_EINPUT for an impossible spec. */
 int dem_axis_grid(const dem_axis_t *a, double **g, int *n, dem_error_t *e);
 
+/* The grid lines of na <= 3 axes (x, y, z in that order) by
+ * dem_axis_grid: g[a] and n[a] for each; on error a message naming the
+ * axis ("mesh y axis: ...") and nothing left allocated. */
+int dem_mesh_axes(const dem_axis_t *ax, int na, double **g, int *n, dem_error_t *e);
+
 enum dem_face { DEM_XMIN, DEM_XMAX, DEM_YMIN, DEM_YMAX, DEM_ZMIN, DEM_ZMAX };
 typedef enum dem_bc { DEM_BC_FREE = 0, DEM_BC_FIXED, DEM_BC_NORMAL, DEM_BC_PERIODIC } dem_bc_t;
 

@@ -1,0 +1,95 @@
+/* mesh2.c - structured quadrilateral meshes of a rectangle (see mesh2.h). */
+#include "mesh/mesh2.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+int dem_mesh2_rect(dem_mesh2_t *m, const dem_axis_t ax[2], dem_error_t *e)
+{
+	double *g[2];
+	int n[2];
+
+	memset(m, 0, sizeof *m);
+	if (dem_mesh_axes(ax, 2, g, n, e) != DEM_OK)
+		return e->code;
+	size_t nn = (size_t)(n[0] + 1) * (size_t)(n[1] + 1), ne = (size_t)n[0] * (size_t)n[1];
+	m->nx = n[0], m->ny = n[1];
+	m->gx = g[0], m->gy = g[1];
+	if (nn > UINT32_MAX) {
+		dem_mesh2_free(m);
+		return dem_error_set(e, DEM_EINPUT, "mesh: %zu nodes are more than a mesh can number (%u)",
+				     nn, UINT32_MAX);
+	}
+	m->nn = nn, m->ne = ne;
+	m->X = malloc(2 * nn * sizeof *m->X);
+	m->quad = malloc(4 * ne * sizeof *m->quad);
+	m->fix = calloc(nn, sizeof *m->fix);
+	if (!m->X || !m->quad || !m->fix) {
+		dem_mesh2_free(m);
+		return dem_error_nomem(e, "mesh");
+	}
+	for (int j = 0; j <= m->ny; j++)
+		for (int i = 0; i <= m->nx; i++) {
+			size_t p = dem_mesh2_node(m, i, j);
+			m->X[2 * p] = m->gx[i];
+			m->X[2 * p + 1] = m->gy[j];
+		}
+	for (int j = 0; j < m->ny; j++)
+		for (int i = 0; i < m->nx; i++) {
+			uint32_t *q = m->quad + 4 * dem_mesh2_elem(m, i, j);
+			q[0] = (uint32_t)dem_mesh2_node(m, i, j);
+			q[1] = (uint32_t)dem_mesh2_node(m, i + 1, j);
+			q[2] = (uint32_t)dem_mesh2_node(m, i + 1, j + 1);
+			q[3] = (uint32_t)dem_mesh2_node(m, i, j + 1);
+		}
+	return DEM_OK;
+}
+
+void dem_mesh2_free(dem_mesh2_t *m)
+{
+	free(m->gx), free(m->gy);
+	free(m->X), free(m->quad), free(m->fix);
+	memset(m, 0, sizeof *m);
+}
+
+void dem_mesh2_set_bc(dem_mesh2_t *m, const dem_bc_t bc[4])
+{
+	static const uint8_t normal[2] = { DEM_FIX_X, DEM_FIX_Y };
+	const uint8_t all = DEM_FIX_X | DEM_FIX_Y;
+
+	for (int j = 0; j <= m->ny; j++)
+		for (int i = 0; i <= m->nx; i++) {
+			int on[4] = { i == 0, i == m->nx, j == 0, j == m->ny };
+			uint8_t b = 0;
+			for (int f = 0; f < 4; f++) {
+				if (!on[f] || bc[f] == DEM_BC_FREE || bc[f] == DEM_BC_PERIODIC)
+					continue;
+				b |= bc[f] == DEM_BC_FIXED ? all : normal[f / 2];
+			}
+			m->fix[dem_mesh2_node(m, i, j)] = b;
+		}
+}
+
+void dem_mesh2_gather(const dem_mesh2_t *m, size_t el, const double *u, double x[8])
+{
+	const uint32_t *q = m->quad + 4 * el;
+	for (int I = 0; I < 4; I++)
+		for (int c = 0; c < 2; c++)
+			x[4 * c + I] = m->X[2 * (size_t)q[I] + c] + (u ? u[2 * (size_t)q[I] + c] : 0);
+}
+
+size_t dem_mesh2_top_segments(const dem_mesh2_t *m, double x0, double x1, uint32_t *seg)
+{
+	size_t n = 0;
+	for (int i = 0; i < m->nx; i++) {
+		double xc = 0.5 * (m->gx[i] + m->gx[i + 1]);
+		if (xc < x0 || xc > x1)
+			continue;
+		if (seg) {
+			seg[2 * n] = (uint32_t)dem_mesh2_node(m, i, m->ny);
+			seg[2 * n + 1] = (uint32_t)dem_mesh2_node(m, i + 1, m->ny);
+		}
+		n++;
+	}
+	return n;
+}

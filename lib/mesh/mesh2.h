@@ -1,0 +1,71 @@
+/* mesh2.h - structured quadrilateral meshes of a rectangle, for the 2D
+ * explicit block (fe/explicit2d.h: plane strain, Ch. 7.4; axisymmetric,
+ * Ch. 7.5.1).
+ *
+ * The 2D twin of mesh.h: each axis is meshed by dem_axis_grid (mesh.h: a
+ * fine region of uniform elements, geometric grading outside it, capped at
+ * hmax), and the mesh is the tensor product of the two axes' grid lines, so
+ * every element is a rectangle in the reference state.  y is the thickness
+ * direction; the top edge (y = gy[ny]) is the peened surface.  For an
+ * axisymmetric model x is the radius r (the x axis must then start at
+ * r >= 0; nodes at r = 0 lie on the axis).
+ *
+ * Numbering.  Grid lines i = 0..nx along x (coordinate gx[i]), j = 0..ny
+ * along y; node (i, j) is i + (nx+1) j; element (i, j) is i + nx j, with its
+ * 4 nodes counter-clockwise from (i, j) as fe/quad4.h wants.
+ *
+ * Boundary conditions by edge (enum dem_face's first four: DEM_XMIN,
+ * DEM_XMAX, DEM_YMIN, DEM_YMAX): each edge is free, fixed (both
+ * displacements zero) or fixed in its normal direction (a roller).  A node
+ * on two edges takes the union of their constraints.  No periodic ties.
+ */
+#ifndef DEM_MESH_MESH2_H
+#define DEM_MESH_MESH2_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/error.h"
+#include "mesh/mesh.h"
+
+typedef struct dem_mesh2 {
+	int nx, ny;              /* elements along each axis */
+	double *gx, *gy;         /* grid lines (nx+1, ny+1 values) */
+	size_t nn, ne;           /* nodes, elements */
+	double *X;               /* reference coordinates, 2 per node (x, y) */
+	uint32_t *quad;          /* 4 node numbers per element */
+	uint8_t *fix;            /* DEM_FIX_X, DEM_FIX_Y bits per node */
+} dem_mesh2_t;
+
+/* Build the mesh of the rectangle given by two axes (ax[0] along x, ax[1]
+ * along y).  DEM_EINPUT for a bad axis, DEM_EIO when out of memory.  No
+ * constraints (fix all zero). */
+int dem_mesh2_rect(dem_mesh2_t *m, const dem_axis_t ax[2], dem_error_t *e);
+void dem_mesh2_free(dem_mesh2_t *m);
+
+/* Set the node constraints from the four edges' conditions (indexed by
+ * DEM_XMIN..DEM_YMAX); clears earlier ones.  DEM_BC_PERIODIC counts as
+ * free. */
+void dem_mesh2_set_bc(dem_mesh2_t *m, const dem_bc_t bc[4]);
+
+static inline size_t dem_mesh2_node(const dem_mesh2_t *m, int i, int j)
+{
+	return (size_t)i + (size_t)(m->nx + 1) * (size_t)j;
+}
+
+static inline size_t dem_mesh2_elem(const dem_mesh2_t *m, int i, int j)
+{
+	return (size_t)i + (size_t)m->nx * (size_t)j;
+}
+
+/* Gather element el's reference coordinates, component-major as quad4.h
+ * wants (x[0..3], y[4..7]), displaced by u (2 per node, may be NULL). */
+void dem_mesh2_gather(const dem_mesh2_t *m, size_t el, const double *u, double x[8]);
+
+/* The segments of the top edge (y = gy[ny]) whose midpoints lie in
+ * [x0, x1], left to right, so that the outside (+y) is on each segment's
+ * left as contact/disk.h and dem_fe2_add_pressure want: writes 2 node
+ * numbers per segment to seg (unless NULL) and returns the count. */
+size_t dem_mesh2_top_segments(const dem_mesh2_t *m, double x0, double x1, uint32_t *seg);
+
+#endif
