@@ -8,6 +8,12 @@
 # DEM_TEST_INSTALLED=1 (make installcheck) PATH is BINDIR and the system's
 # folders only, and every program of cmd/ must be there; a staged install
 # (DEM_TEST_DESTDIR) has its library found through DEM_DATA.
+# DEM_TEST_JOBS (default: the number of cores) test programs run at once:
+# the unit tests by xargs -P, the bats files by bats --jobs when GNU
+# parallel is installed (make deps installs it; bats needs it for --jobs),
+# one file at a time each (--no-parallelize-within-files: a file's tests
+# may share what its setup_file made).  Every test writes under its own
+# temporary folder, so the order they run in does not matter.
 testdir=$1 bindir=$2 sanitize=$3
 shift 3
 unset DEM_DATA
@@ -23,12 +29,23 @@ else
 fi
 log=$(mktemp -d) || exit 4
 trap 'rm -rf "$log"' EXIT
+jobs=${DEM_TEST_JOBS:-$(nproc 2>/dev/null || echo 1)}
+case $jobs in ''|*[!0-9]*|0) echo "tests: DEM_TEST_JOBS: a positive number, not '$jobs'" >&2; exit 2 ;; esac
 status=0
 export CMOCKA_MESSAGE_OUTPUT=TAP
+# each unit test program: its TAP into LOG/NAME.tap, stderr into
+# LOG/NAME.err, and LOG/NAME.failed when it exits non-zero
+units=
 for t in ${testdir:+"$testdir"/test_*}; do
-	[ -x "$t" ] || continue
+	[ -x "$t" ] && units="$units $t"
+done
+if [ -n "$units" ]; then
+	printf '%s\n' $units | LOG=$log xargs -P "$jobs" -n 1 sh -c \
+		'n=$(basename "$1"); "$1" > "$LOG/$n.tap" 2> "$LOG/$n.err" || : > "$LOG/$n.failed"' unit
+fi
+for t in $units; do
 	name=$(basename "$t")
-	if ! "$t" > "$log/$name.tap" 2>"$log/$name.err"; then
+	if [ -e "$log/$name.failed" ]; then
 		status=1
 		echo "unit: $name: FAILED" >&2
 		grep -v '^ok ' "$log/$name.tap" | head -40 >&2
@@ -57,7 +74,11 @@ fi
 if [ $# -gt 0 ]; then
 	# bats by its full name: PATH may not have it
 	bats=$(command -v bats) || { echo "cli: bats is not installed" >&2; exit 4; }
-	if ! PATH="$path" DEM_SANITIZE="$sanitize" "$bats" --tap "$@" > "$log/cli.tap" 2>"$log/cli.err"; then
+	par=
+	if [ "$jobs" -gt 1 ] && command -v parallel > /dev/null; then
+		par="--jobs $jobs --no-parallelize-within-files"
+	fi
+	if ! PATH="$path" DEM_SANITIZE="$sanitize" "$bats" --tap $par "$@" > "$log/cli.tap" 2>"$log/cli.err"; then
 		status=1
 		echo "cli: FAILED" >&2
 		grep -A12 '^not ok' "$log/cli.tap" >&2

@@ -3,7 +3,7 @@
 # the PACKAGEs named (CI: lintian), or say how.  debhelper is for the
 # Debian package (make deb, dpkg-buildpackage).
 # Quick when everything is there: one dpkg-query call.
-pkgs="build-essential pkg-config man-db libgsl-dev libyaml-dev zlib1g-dev libsuitesparse-dev libopenblas0-pthread libcmocka-dev bats gnuplot-nox valgrind debhelper $*"
+pkgs="build-essential pkg-config man-db libgsl-dev libyaml-dev zlib1g-dev libsuitesparse-dev libopenblas0-pthread libcmocka-dev bats parallel gnuplot-nox valgrind debhelper $*"
 missing=""
 for p in $pkgs; do
 	st=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null)
