@@ -1228,6 +1228,10 @@ static int start_polygon(struct packer *p, int *seg)
 	const double *v = p->poly;
 	int nv = p->npoly, lid = 0, low = 0;
 
+	/* the walls are objects 0 .. nv-1: room for them first (the first
+	 * reservation counts disks only, and may hold fewer) */
+	if (reserve(p, nv))
+		return -1;
 	for (int k = 0; k < nv; k++) {
 		int k1 = (k + 1) % nv;
 		double ax = v[2 * k], ay = v[2 * k + 1], bx = v[2 * k1], by = v[2 * k1 + 1];

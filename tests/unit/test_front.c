@@ -610,6 +610,40 @@ static void test_polygons(void **state)
 			}
 }
 
+/* A polygon of more vertices than the first reservation of disks holds
+ * (that reservation comes from the area over the mean disk area: here a
+ * disk's worth of a few, so 64 to 128 objects) packs like any other: the
+ * walls, one object per edge, were once written past the end of the
+ * arrays (a heap overflow that ASan reports and glibc's malloc aborts on).
+ * 300 and the scene's largest, 4096, edges round a circle of radius 1,
+ * disks of radius 0.3: every disk inside, none overlapping. */
+static void test_polygon_many_vertices(void **state)
+{
+	(void)state;
+	static const int counts[] = {300, 4096};
+	for (int c = 0; c < 2; c++) {
+		int n = counts[c];
+		double *v = malloc(2 * (size_t)n * sizeof *v);
+		assert_non_null(v);
+		for (int k = 0; k < n; k++) {
+			v[2 * k] = cos(2 * DEM_PI * k / n);
+			v[2 * k + 1] = sin(2 * DEM_PI * k / n);
+		}
+		dem_front_spec_t s = spec(DEM_FRONT_OPEN, 1, 1, DEM_RADIUS_MONO, 0.3, 1);
+		s.polygon = v;
+		s.npolygon = n;
+		struct set out;
+		dem_front_stats_t st;
+		run(&s, 3, &out, &st);
+		assert_true(out.n >= 3);
+		check_packing(&out, NULL, "many vertices");
+		for (size_t i = 0; i < out.n; i++)
+			assert_true(hypot(out.x[i], out.y[i]) <= 1 - out.r[i] * (1 - TOL));
+		set_free(&out);
+		free(v);
+	}
+}
+
 /* Polygons that are not simple, or have no area, are refused. */
 static void test_polygon_errors(void **state)
 {
@@ -720,6 +754,7 @@ int main(void)
 		cmocka_unit_test(test_errors),
 		cmocka_unit_test(test_polygons),
 		cmocka_unit_test(test_polygon_errors),
+		cmocka_unit_test(test_polygon_many_vertices),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
