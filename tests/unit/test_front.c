@@ -669,6 +669,18 @@ static void test_polygon_errors(void **state)
 	dem_error_t e;
 	dem_error_clear(&e);
 	assert_int_equal(dem_front_polygon_check(polys[2].v, polys[2].n, &e), DEM_OK);
+	/* where a polygon lies does not decide whether it has an area: a
+	 * square of side 0.5 far from the origin has one (its area was once
+	 * held against 1e-12 of the coordinates squared, 1, not of its
+	 * size squared), and a line there has none */
+	static const double far[8] = {1e6, 1e6, 1e6 + 0.5, 1e6, 1e6 + 0.5, 1e6 + 0.5, 1e6, 1e6 + 0.5};
+	static const double farline[6] = {1e6, 1e6, 1e6 + 1, 1e6 + 1, 1e6 + 2, 1e6 + 2};
+	dem_error_clear(&e);
+	if (dem_front_polygon_check(far, 4, &e) != DEM_OK)
+		fail_msg("a square of side 0.5 at (1e6, 1e6) refused: %s", e.msg);
+	dem_error_clear(&e);
+	assert_int_equal(dem_front_polygon_check(farline, 3, &e), DEM_EINPUT);
+	dem_error_clear(&e);
 	/* a polygon with the closed form */
 	dem_front_spec_t s = spec(DEM_FRONT_CLOSED, 1, 1, DEM_RADIUS_URD, 0.5, 2);
 	s.polygon = polys[0].v;
