@@ -1485,8 +1485,10 @@ static int check_spec(const dem_front_spec_t *s, dem_error_t *e)
 		if (s->form != DEM_FRONT_OPEN)
 			return dem_error_set(e, DEM_EINPUT,
 					     "advancing front: a polygon needs the open form (Ch. 5.2.2)");
-		if (dem_front_polygon_check(s->polygon, s->npolygon, e))
-			return dem_error_set(e, DEM_EINPUT, "advancing front: %s", e->msg);
+		/* its own error first: e keeps the first message set on it */
+		dem_error_t e2 = {0};
+		if (dem_front_polygon_check(s->polygon, s->npolygon, &e2))
+			return dem_error_set(e, DEM_EINPUT, "advancing front: %s", e2.msg);
 	}
 	for (int d = 0; d < 2 && !s->polygon; d++)
 		if (!(isfinite(s->lo[d]) && isfinite(s->hi[d]) && s->lo[d] < s->hi[d]))

@@ -681,6 +681,20 @@ static void test_polygon_errors(void **state)
 	dem_error_clear(&e);
 	assert_int_equal(dem_front_polygon_check(farline, 3, &e), DEM_EINPUT);
 	dem_error_clear(&e);
+	/* the packer names itself before the polygon's fault */
+	{
+		dem_front_spec_t bt = spec(DEM_FRONT_OPEN, 1, 1, DEM_RADIUS_URD, 0.1, 2);
+		gsl_rng *g = dem_rng_derive(1, 0);
+		struct set out = {0};
+		bt.polygon = bad[1].v;
+		bt.npolygon = bad[1].n;
+		assert_int_equal(dem_pack_front(&bt, g, collect, &out, NULL, &e), DEM_EINPUT);
+		if (!strstr(e.msg, "advancing front: polygon edges"))
+			fail_msg("bow tie: '%s'", e.msg);
+		assert_int_equal(out.n, 0);
+		gsl_rng_free(g);
+	}
+	dem_error_clear(&e);
 	/* a polygon with the closed form */
 	dem_front_spec_t s = spec(DEM_FRONT_CLOSED, 1, 1, DEM_RADIUS_URD, 0.5, 2);
 	s.polygon = polys[0].v;
