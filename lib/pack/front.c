@@ -1228,6 +1228,10 @@ static int start_polygon(struct packer *p, int *seg)
 	const double *v = p->poly;
 	int nv = p->npoly, lid = 0, low = 0;
 
+	/* the walls are objects 0 .. nv-1: room for them first (the first
+	 * reservation counts disks only, and may hold fewer) */
+	if (reserve(p, nv))
+		return -1;
 	for (int k = 0; k < nv; k++) {
 		int k1 = (k + 1) % nv;
 		double ax = v[2 * k], ay = v[2 * k + 1], bx = v[2 * k1], by = v[2 * k1 + 1];
@@ -1417,6 +1421,17 @@ static int meet(const double *a, const double *b, const double *c, const double 
 	       (o4 == 0 && on_seg(c[0], c[1], d[0], d[1], b[0], b[1]));
 }
 
+/* Twice the signed area of the n-gon v (shoelace, positive anticlockwise),
+ * taken about its first vertex: the terms then have the polygon's size,
+ * not its distance from the origin, and do not cancel. */
+static double twice_area(const double *v, int n)
+{
+	double a2 = 0;
+	for (int i = 1; i + 1 < n; i++)
+		a2 += (v[2 * i] - v[0]) * (v[2 * i + 3] - v[1]) - (v[2 * i + 1] - v[1]) * (v[2 * i + 2] - v[0]);
+	return a2;
+}
+
 int dem_front_polygon_check(const double *v, int n, dem_error_t *e)
 {
 	double a2 = 0, size = 0;
@@ -1424,18 +1439,20 @@ int dem_front_polygon_check(const double *v, int n, dem_error_t *e)
 	if (!v || n < 3)
 		return dem_error_set(e, DEM_EINPUT, "a polygon needs at least 3 vertices (got %d)",
 				     v ? n : 0);
-	for (int i = 0; i < 2 * n; i++) {
+	for (int i = 0; i < 2 * n; i++)
 		if (!isfinite(v[i]))
 			return dem_error_set(e, DEM_EINPUT, "polygon vertex %d is not finite", i / 2 + 1);
-		size = fmax(size, fabs(v[i]));
-	}
+	/* the size and the area about the first vertex, so that they do not
+	 * depend on where the polygon lies */
+	for (int i = 0; i < 2 * n; i++)
+		size = fmax(size, fabs(v[i] - v[i % 2]));
 	for (int i = 0; i < n; i++) {
 		const double *a = v + 2 * i, *b = v + 2 * ((i + 1) % n);
 		if (a[0] == b[0] && a[1] == b[1])
 			return dem_error_set(e, DEM_EINPUT, "polygon vertices %d and %d coincide",
 					     i + 1, (i + 1) % n + 1);
-		a2 += a[0] * b[1] - a[1] * b[0];
 	}
+	a2 = twice_area(v, n);
 	for (int i = 0; i < n; i++) {
 		const double *a = v + 2 * i, *b = v + 2 * ((i + 1) % n);
 		for (int j = i + 1; j < n; j++) {
@@ -1468,8 +1485,10 @@ static int check_spec(const dem_front_spec_t *s, dem_error_t *e)
 		if (s->form != DEM_FRONT_OPEN)
 			return dem_error_set(e, DEM_EINPUT,
 					     "advancing front: a polygon needs the open form (Ch. 5.2.2)");
-		if (dem_front_polygon_check(s->polygon, s->npolygon, e))
-			return dem_error_set(e, DEM_EINPUT, "advancing front: %s", e->msg);
+		/* its own error first: e keeps the first message set on it */
+		dem_error_t e2 = {0};
+		if (dem_front_polygon_check(s->polygon, s->npolygon, &e2))
+			return dem_error_set(e, DEM_EINPUT, "advancing front: %s", e2.msg);
 	}
 	for (int d = 0; d < 2 && !s->polygon; d++)
 		if (!(isfinite(s->lo[d]) && isfinite(s->hi[d]) && s->lo[d] < s->hi[d]))
@@ -1550,10 +1569,7 @@ static int setup_domain(struct packer *p)
 	if (!p->poly || !p->w)
 		return -1;
 	p->npoly = n;
-	for (int i = 0; i < n; i++) {
-		int j = (i + 1) % n;
-		a2 += s->polygon[2 * i] * s->polygon[2 * j + 1] - s->polygon[2 * i + 1] * s->polygon[2 * j];
-	}
+	a2 = twice_area(s->polygon, n);
 	p->lo[0] = p->lo[1] = HUGE_VAL;
 	p->hi[0] = p->hi[1] = -HUGE_VAL;
 	for (int i = 0; i < n; i++) {

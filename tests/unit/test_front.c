@@ -610,6 +610,40 @@ static void test_polygons(void **state)
 			}
 }
 
+/* A polygon of more vertices than the first reservation of disks holds
+ * (that reservation comes from the area over the mean disk area: here a
+ * disk's worth of a few, so 64 to 128 objects) packs like any other: the
+ * walls, one object per edge, were once written past the end of the
+ * arrays (a heap overflow that ASan reports and glibc's malloc aborts on).
+ * 300 and the scene's largest, 4096, edges round a circle of radius 1,
+ * disks of radius 0.3: every disk inside, none overlapping. */
+static void test_polygon_many_vertices(void **state)
+{
+	(void)state;
+	static const int counts[] = {300, 4096};
+	for (int c = 0; c < 2; c++) {
+		int n = counts[c];
+		double *v = malloc(2 * (size_t)n * sizeof *v);
+		assert_non_null(v);
+		for (int k = 0; k < n; k++) {
+			v[2 * k] = cos(2 * DEM_PI * k / n);
+			v[2 * k + 1] = sin(2 * DEM_PI * k / n);
+		}
+		dem_front_spec_t s = spec(DEM_FRONT_OPEN, 1, 1, DEM_RADIUS_MONO, 0.3, 1);
+		s.polygon = v;
+		s.npolygon = n;
+		struct set out;
+		dem_front_stats_t st;
+		run(&s, 3, &out, &st);
+		assert_true(out.n >= 3);
+		check_packing(&out, NULL, "many vertices");
+		for (size_t i = 0; i < out.n; i++)
+			assert_true(hypot(out.x[i], out.y[i]) <= 1 - out.r[i] * (1 - TOL));
+		set_free(&out);
+		free(v);
+	}
+}
+
 /* Polygons that are not simple, or have no area, are refused. */
 static void test_polygon_errors(void **state)
 {
@@ -635,6 +669,32 @@ static void test_polygon_errors(void **state)
 	dem_error_t e;
 	dem_error_clear(&e);
 	assert_int_equal(dem_front_polygon_check(polys[2].v, polys[2].n, &e), DEM_OK);
+	/* where a polygon lies does not decide whether it has an area: a
+	 * square of side 0.5 far from the origin has one (its area was once
+	 * held against 1e-12 of the coordinates squared, 1, not of its
+	 * size squared), and a line there has none */
+	static const double far[8] = {1e6, 1e6, 1e6 + 0.5, 1e6, 1e6 + 0.5, 1e6 + 0.5, 1e6, 1e6 + 0.5};
+	static const double farline[6] = {1e6, 1e6, 1e6 + 1, 1e6 + 1, 1e6 + 2, 1e6 + 2};
+	dem_error_clear(&e);
+	if (dem_front_polygon_check(far, 4, &e) != DEM_OK)
+		fail_msg("a square of side 0.5 at (1e6, 1e6) refused: %s", e.msg);
+	dem_error_clear(&e);
+	assert_int_equal(dem_front_polygon_check(farline, 3, &e), DEM_EINPUT);
+	dem_error_clear(&e);
+	/* the packer names itself before the polygon's fault */
+	{
+		dem_front_spec_t bt = spec(DEM_FRONT_OPEN, 1, 1, DEM_RADIUS_URD, 0.1, 2);
+		gsl_rng *g = dem_rng_derive(1, 0);
+		struct set out = {0};
+		bt.polygon = bad[1].v;
+		bt.npolygon = bad[1].n;
+		assert_int_equal(dem_pack_front(&bt, g, collect, &out, NULL, &e), DEM_EINPUT);
+		if (!strstr(e.msg, "advancing front: polygon edges"))
+			fail_msg("bow tie: '%s'", e.msg);
+		assert_int_equal(out.n, 0);
+		gsl_rng_free(g);
+	}
+	dem_error_clear(&e);
 	/* a polygon with the closed form */
 	dem_front_spec_t s = spec(DEM_FRONT_CLOSED, 1, 1, DEM_RADIUS_URD, 0.5, 2);
 	s.polygon = polys[0].v;
@@ -720,6 +780,7 @@ int main(void)
 		cmocka_unit_test(test_errors),
 		cmocka_unit_test(test_polygons),
 		cmocka_unit_test(test_polygon_errors),
+		cmocka_unit_test(test_polygon_many_vertices),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
