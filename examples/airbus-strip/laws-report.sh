@@ -27,7 +27,10 @@ echo "| law | v (m/s) | h(8) mm | h(16) | h(32) | 16 to 32 | saturated (16-32 wi
 echo "|---|---|---:|---:|---:|---:|---|---|---:|---:|"
 for v in $vels; do
 	col=$([ "$v" = 36 ] && echo 2 || echo 4)
-	awk -F'|' -v c="$col" '/^\| [0-9.]+ \|/ { n = $2 + 0; if (n <= 32) print n, 0, $(c + 1) + 0 }' REPORT-long.md \
+	# the first table only (arc height per pass); later ones (the gauge's)
+	# also start with the exposure
+	awk -F'|' -v c="$col" '/^\| [0-9.]+ \|/ { t = 1; n = $2 + 0; if (n <= 32) print n, 0, $(c + 1) + 0; next }
+		t { exit }' REPORT-long.md \
 		> "/tmp/laws-linear-$$-$v.txt"
 done
 row() {   # law v curve-file saturation-file demshot-log
