@@ -41,11 +41,13 @@
 #include "core/cost.h"
 #include "core/rng.h"
 #include "fe/explicit.h"
+#include "fe/explicit2d.h"
 #include "fe/fescene.h"
 #include "io/scene.h"
 #include "io/state.h"
 #include "io/vtu.h"
 #include "shot/shotset.h"
+#include "shot/shotset2d.h"
 
 #define PROG "demshot"
 
@@ -147,8 +149,12 @@ struct pulse {
 
 struct settings {
 	dem_mat_t mat;
-	dem_mesh_t mesh;
+	dem_mesh_t mesh;        /* 2D: the state stream's, one element thick (mesh2.h) */
 	dem_fe_opts_t fe;
+	int dim;                /* 3, or 2: the block is mesh2 */
+	int axisym;             /* dim 2: axisymmetric, else plane strain */
+	double thick;           /* dim 2 plane strain: the slab's thickness (m) */
+	dem_mesh2_t mesh2;
 	double end, xi;         /* xi < 0: no damping */
 	long frames;
 	int have_load;
@@ -166,6 +172,7 @@ static void settings_free(struct settings *st)
 {
 	dem_mat_free(&st->mat);
 	dem_mesh_free(&st->mesh);
+	dem_mesh2_free(&st->mesh2);
 	free(st->load.t);
 	free(st->load.f);
 }
@@ -231,9 +238,13 @@ static int read_shots(dem_scene_t *s, int accuracy, struct settings *st, dem_err
 {
 	static const char *const laws[] = {"power", "hertz", NULL};
 	static const char *const partials[] = {"potential", "area", "volume", NULL};
+	/* 2D: the overlap area or contact width factor of disk.h (Eqs. 3.10,
+	 * 3.11); axisymmetric: the ring's surface (shotset2d.h), not chosen */
+	static const char *const partials2[] = {"area", "width", NULL};
+	const int plane2 = st->dim == 2 && !st->axisym;
 	dem_contact_param_t p = {0};
 	double m, alpha, h = HUGE_VAL;
-	int law, partial;
+	int law, partial = 0;
 
 	for (int i = 0; i < st->mesh.nx; i++)
 		h = fmin(h, st->mesh.gx[i + 1] - st->mesh.gx[i]);
@@ -248,7 +259,9 @@ static int read_shots(dem_scene_t *s, int accuracy, struct settings *st, dem_err
 	    dem_scene_quantity(s, "contact.m", DEM_DIM_NONE, DEM_LAW_M_HERTZ, 1, 4, &m, e) ||
 	    dem_scene_quantity(s, "contact.alpha", DEM_DIM_NONE, 2.5, DEM_SCENE_GT0,
 			       HUGE_VAL, &alpha, e) ||
-	    dem_scene_choice(s, "contact.partial", partials, DEM_PARTIAL_POTENTIAL, &partial, e) ||
+	    (st->dim == 3 &&
+	     dem_scene_choice(s, "contact.partial", partials, DEM_PARTIAL_POTENTIAL, &partial, e)) ||
+	    (plane2 && dem_scene_choice(s, "contact.partial", partials2, 0, &partial, e)) ||
 	    dem_scene_quantity(s, "run.lambda", DEM_DIM_NONE,
 			       accuracy == DEM_ACCURACY_FINE ? 0.1 :
 			       accuracy == DEM_ACCURACY_COARSE ? 0.3 : DEM_DT_LAMBDA_DEFAULT,
@@ -258,13 +271,20 @@ static int read_shots(dem_scene_t *s, int accuracy, struct settings *st, dem_err
 	    dem_scene_quantity(s, "run.steady", DEM_DIM_NONE, 0.01, DEM_SCENE_GT0, 1,
 			       &st->steady, e))
 		return e->code;
-	if (law == 1) {
+	if (plane2) {
+		/* a disk's law per unit thickness (law.h dim = 2); hertz: the
+		 * generalised Hertz law of a rigid disk (Eqs. 3.30-3.32) */
+		if (law == 1 ? dem_law_ghertz2d(&p.law, st->mat.E, st->mat.nu, e)
+			     : dem_law_init_dim(&p.law, alpha, st->mat.E, m, 2, e))
+			return e->code;
+		partial = partial ? DEM_PARTIAL_WIDTH : DEM_PARTIAL_AREA;
+	} else if (law == 1) {
 		if (dem_law_hertz(&p.law, st->mat.E, st->mat.nu, e))
 			return e->code;
 	} else if (dem_law_init(&p.law, alpha, st->mat.E, m, e)) {
 		return e->code;
 	}
-	p.partial = partial;
+	p.partial = st->dim == 2 && st->axisym ? DEM_PARTIAL_AREA : partial;
 	/* the effects the scene gives (DESIGN.md) */
 	if (dem_scene_has(s, "contact.friction")) {
 		p.friction = 1;
@@ -301,10 +321,22 @@ static int read_scene(dem_scene_t *s, int accuracy, int shots, struct settings *
 	static const char *const strains[] = {"small", "large", NULL};
 	int rule, large;
 
+	long dim;
+
 	dem_fe_opts_default(&st->fe);
 	st->xi = -1;
-	if (dem_scene_material(s, 1, &st->mat, e) ||
-	    dem_scene_block(s, &st->mesh, e))
+	if (dem_scene_int(s, "dim", 3, 2, 3, &dim, e) ||
+	    dem_scene_material(s, 1, &st->mat, e))
+		return e->code;
+	st->dim = (int)dim;
+	if (dim == 3 && dem_scene_block(s, &st->mesh, e))
+		return e->code;
+	/* 2D: the block in the x-z plane, and for the streams the 3D programs
+	 * read the same mesh one element thick in y (mesh2.h); axisymmetric:
+	 * as thick as the finest element (a view, not a measure) */
+	if (dim == 2 && (dem_scene_block2(s, &st->mesh2, &st->axisym, &st->thick, e) ||
+			 dem_mesh2_extrude(&st->mesh2, st->axisym ? st->mesh2.gx[1] - st->mesh2.gx[0]
+								  : st->thick, &st->mesh, e)))
 		return e->code;
 	/* the accuracy preset chooses the element unless the scene does; the
 	 * strain measure is large for every preset: small strain drops the
@@ -329,6 +361,9 @@ static int read_scene(dem_scene_t *s, int accuracy, int shots, struct settings *
 	st->fe.large = large;
 	if (read_load(s, st, e))
 		return e->code;
+	if (st->dim == 2 && st->have_load)
+		return dem_scene_error(s, "load", e, "a 2D block (dim: 2) takes shots "
+				       "only, not a pressure load");
 	/* a shot stream: the argument, or standard input without a load */
 	st->have_shots = shots || !st->have_load;
 	if (isnan(st->end) && !st->have_shots)
@@ -337,8 +372,9 @@ static int read_scene(dem_scene_t *s, int accuracy, int shots, struct settings *
 	if (isnan(st->xi))
 		st->xi = -1;    /* no damping: the effect is absent */
 	else
-		st->fe.damping = dem_fe_damping_alpha(&st->mat, st->xi,
-						      -st->mesh.gz[0]);
+		st->fe.damping = st->dim == 2
+			? dem_fe2_damping_alpha(&st->mat, st->xi, -st->mesh2.gy[0])
+			: dem_fe_damping_alpha(&st->mat, st->xi, -st->mesh.gz[0]);
 	if (st->have_shots && read_shots(s, accuracy, st, e))
 		return e->code;
 	return dem_scene_check(s, sections, e);
@@ -387,42 +423,164 @@ static void log_effects(const struct settings *st)
 		fprintf(stderr, ", %d back-stress%s", m->nkin, m->nkin > 1 ? "es" : "");
 	if (m->flags & DEM_MAT_RATE)
 		fprintf(stderr, ", rate dependence (%s)", dem_mat_rate_name(m));
+	if (st->dim == 2)
+		fprintf(stderr, ", 2D %s", st->axisym ? "axisymmetric" : "plane strain");
 	fprintf(stderr, ", %s strain, %s", st->fe.large ? "large" : "small",
-		st->fe.rule == DEM_FE_FULL ? "full 2x2x2 B-bar integration"
+		st->fe.rule == DEM_FE_FULL ? (st->dim == 2 ? "full 2x2 B-bar integration"
+						: "full 2x2x2 B-bar integration")
 		: "one-point integration with hourglass control");
 	if (st->xi >= 0)
 		fprintf(stderr, ", damping %g of critical", st->xi);
 	fprintf(stderr, "%s", st->have_load ? ", pressure load" : "");
 	if (st->have_shots)
-		fprintf(stderr, ", shots: contact %s, sphere/sphere%s, lambda %g",
-			st->cm.effects, st->cm.sepfix ? " (separation correction)" : "",
-			st->so.lambda);
+		fprintf(stderr, ", shots: contact %s, %s%s, lambda %g",
+			st->cm.effects, st->dim == 3 ? "sphere/sphere" : st->axisym ?
+			"one sphere on the axis" : "disk/disk", st->dim == 3 && st->cm.sepfix ?
+			" (separation correction)" : "", st->so.lambda);
 	fputc('\n', stderr);
 }
 
-/* Field buffers for a frame. */
+/* Field buffers for a frame (of st->mesh); in 2D also the 2D model's,
+ * lifted onto it (mesh2.h). */
 struct fields {
 	double *u, *sig, *eps, *ep;
+	double *u2, *sig2, *eps2, *ep2;
 };
 
-static int fields_alloc(struct fields *f, const dem_mesh_t *m)
+static int fields_alloc(struct fields *f, const struct settings *st)
 {
+	const dem_mesh_t *m = &st->mesh;
+	const dem_mesh2_t *m2 = &st->mesh2;
 	f->u = malloc(3 * m->nn * sizeof *f->u);
 	f->sig = malloc(6 * m->ne * sizeof *f->sig);
 	f->eps = malloc(6 * m->ne * sizeof *f->eps);
 	f->ep = malloc(m->ne * sizeof *f->ep);
-	return f->u && f->sig && f->eps && f->ep ? 0 : -1;
+	if (!f->u || !f->sig || !f->eps || !f->ep)
+		return -1;
+	if (st->dim == 3)
+		return 0;
+	f->u2 = malloc(2 * m2->nn * sizeof *f->u2);
+	f->sig2 = malloc(6 * m2->ne * sizeof *f->sig2);
+	f->eps2 = malloc(6 * m2->ne * sizeof *f->eps2);
+	f->ep2 = malloc(m2->ne * sizeof *f->ep2);
+	return f->u2 && f->sig2 && f->eps2 && f->ep2 ? 0 : -1;
 }
 
 static void fields_free(struct fields *f)
 {
 	free(f->u), free(f->sig), free(f->eps), free(f->ep);
+	free(f->u2), free(f->sig2), free(f->eps2), free(f->ep2);
 }
 
-static void fields_get(const dem_fe_t *fe, struct fields *f)
+/* The block's model and its shots: the 3D ones (fe, S) or the 2D ones
+ * (fe2, S2); the calls below take the one there is. */
+struct blk {
+	dem_fe_t *fe;
+	dem_shotset_t *S;
+	dem_fe2_t *fe2;
+	dem_shotset2d_t *S2;
+	const dem_mesh2_t *m2;
+};
+
+static double blk_time(const struct blk *b)
 {
-	dem_fe_displacements(fe, f->u);
-	dem_fe_fields(fe, f->sig, f->eps, f->ep);
+	return b->fe2 ? dem_fe2_time(b->fe2) : dem_fe_time(b->fe);
+}
+
+static double blk_dt(const struct blk *b)
+{
+	return b->fe2 ? dem_fe2_dt(b->fe2) : dem_fe_dt(b->fe);
+}
+
+static long blk_steps(const struct blk *b)
+{
+	return b->fe2 ? dem_fe2_steps(b->fe2) : dem_fe_steps(b->fe);
+}
+
+static int blk_step(struct blk *b, double dt, dem_error_t *e)
+{
+	return b->fe2 ? dem_fe2_step(b->fe2, dt, e) : dem_fe_step(b->fe, dt, e);
+}
+
+static void blk_energy(const struct blk *b, dem_fe_energy_t *en)
+{
+	if (b->fe2)
+		dem_fe2_energy(b->fe2, en);
+	else
+		dem_fe_energy(b->fe, en);
+}
+
+static void blk_stats(const struct blk *b, dem_fe_stats_t *fs)
+{
+	if (b->fe2)
+		dem_fe2_stats(b->fe2, fs);
+	else
+		dem_fe_stats(b->fe, fs);
+}
+
+static int blk_save(const struct blk *b, FILE *f, dem_error_t *e)
+{
+	return b->fe2 ? dem_fe2_save(b->fe2, f, e) : dem_fe_save(b->fe, f, e);
+}
+
+static int blk_load(struct blk *b, FILE *f, dem_error_t *e)
+{
+	return b->fe2 ? dem_fe2_load(b->fe2, f, e) : dem_fe_load(b->fe, f, e);
+}
+
+static void fields_get(const struct blk *b, struct fields *f)
+{
+	if (!b->fe2) {
+		dem_fe_displacements(b->fe, f->u);
+		dem_fe_fields(b->fe, f->sig, f->eps, f->ep);
+		return;
+	}
+	dem_fe2_displacements(b->fe2, f->u2);
+	dem_fe2_fields(b->fe2, f->sig2, f->eps2, f->ep2);
+	dem_mesh2_lift(b->m2, f->u2, f->sig2, f->eps2, f->ep2, f->u, f->sig, f->eps, f->ep);
+}
+
+static int sh_begin(struct blk *b, size_t n, const dem_shot_t *sh, dem_error_t *e)
+{
+	return b->S2 ? dem_shotset2d_begin(b->S2, n, sh, dem_fe2_coords(b->fe2), e)
+		     : dem_shotset_begin(b->S, n, sh, dem_fe_coords(b->fe), e);
+}
+
+static int sh_prepare(struct blk *b, double *dt, dem_error_t *e)
+{
+	return b->S2 ? dem_shotset2d_prepare(b->S2, dem_fe2_coords(b->fe2), dem_fe2_velocity(b->fe2),
+					     dem_fe2_dt(b->fe2), dt, e)
+		     : dem_shotset_prepare(b->S, dem_fe_coords(b->fe), dem_fe_velocity(b->fe),
+					   dem_fe_dt(b->fe), dt, e);
+}
+
+static int sh_done(const struct blk *b)
+{
+	return b->S2 ? dem_shotset2d_done(b->S2) : dem_shotset_done(b->S);
+}
+
+static size_t sh_holding(const struct blk *b, size_t *touch, size_t *coming)
+{
+	return b->S2 ? dem_shotset2d_holding(b->S2, touch, coming)
+		     : dem_shotset_holding(b->S, touch, coming);
+}
+
+static size_t sh_count(const struct blk *b)
+{
+	return b->S2 ? dem_shotset2d_count(b->S2) : dem_shotset_count(b->S);
+}
+
+static const dem_shot_body_t *sh_body(const struct blk *b, size_t i)
+{
+	return b->S2 ? dem_shotset2d_body(b->S2, i) : dem_shotset_body(b->S, i);
+}
+
+static void sh_stats(const struct blk *b, dem_shotset_stats_t *ss)
+{
+	if (b->S2)
+		dem_shotset2d_stats(b->S2, ss);
+	else
+		dem_shotset_stats(b->S, ss);
 }
 
 static int open_state(const struct cmdline *cl, const struct settings *st,
@@ -439,6 +597,8 @@ static int open_state(const struct cmdline *cl, const struct settings *st,
 		ax = st->area[2] - st->area[0], ay = st->area[3] - st->area[1];
 		cx = (st->area[0] + st->area[2]) / 2, cy = (st->area[1] + st->area[3]) / 2;
 	}
+	if (st->dim == 2)       /* the x-z plane: all of the layer in y */
+		ay = m->gy[1] - m->gy[0], cy = 0;
 	int rc;
 
 	/* the metadata lines of the header (kind and columns are the state
@@ -451,7 +611,10 @@ static int open_state(const struct cmdline *cl, const struct settings *st,
 			   "dt_factor=%g damping=%g", st->end, st->frames,
 			   st->fe.rule == DEM_FE_FULL ? "full" : "one_point",
 			   st->fe.large ? "large" : "small", st->fe.dt_factor,
-			   st->xi >= 0 ? st->xi : 0)) {
+			   st->xi >= 0 ? st->xi : 0) ||
+	    (st->dim == 2 && (st->axisym
+			      ? dem_header_set(&h, "twod", "mode=axisym")
+			      : dem_header_set(&h, "twod", "mode=plane thickness=%.17g", st->thick)))) {
 		dem_header_free(&h);
 		return dem_error_nomem(e, "header");
 	}
@@ -461,10 +624,11 @@ static int open_state(const struct cmdline *cl, const struct settings *st,
 }
 
 /* Run to the end, writing the frames; progress on stderr every 2 s. */
-static int run(dem_fe_t *fe, const struct settings *st, int quiet,
+static int run(struct blk *b, const struct settings *st, int quiet,
 	       dem_state_writer_t *w, struct fields *f, dem_cost_t *cost,
 	       dem_error_t *e)
 {
+	dem_fe_t *fe = b->fe;
 	double next_report = dem_wall() + 2, twrite = 0;
 	long k = 1;
 	int rc;
@@ -480,7 +644,7 @@ static int run(dem_fe_t *fe, const struct settings *st, int quiet,
 			if (dt > 0 && (rc = dem_fe_step(fe, dt, e)))
 				return rc;
 			double t0 = dem_wall();
-			fields_get(fe, f);
+			fields_get(b, f);
 			if ((rc = dem_state_write_frame(w, 1, dem_fe_time(fe), f->u,
 							f->sig, f->eps, f->ep, e)))
 				return rc;
@@ -749,7 +913,7 @@ static int ck_fresh(struct ckpt *ck, dem_error_t *e)
 }
 
 /* Save after a pass: sync the journal, then write FILE atomically. */
-static int ck_save(struct ckpt *ck, const dem_fe_t *fe, const struct shotin *in, long passes,
+static int ck_save(struct ckpt *ck, const struct blk *b, const struct shotin *in, long passes,
 		   dem_error_t *e)
 {
 	double t0 = dem_wall();
@@ -777,7 +941,7 @@ static int ck_save(struct ckpt *ck, const dem_fe_t *fe, const struct shotin *in,
 	if (fwrite(&h, sizeof h, 1, af.f) != 1 || fwrite(&hcrc, sizeof hcrc, 1, af.f) != 1)
 		rc = dem_error_set(e, DEM_EIO, "%s: write error", ck->path);
 	else
-		rc = dem_fe_save(fe, af.f, e);
+		rc = blk_save(b, af.f, e);
 	if (!rc) {
 		long sz = ftell(af.f);
 		ck->size = sz > 0 ? (size_t)sz : 0;
@@ -794,7 +958,7 @@ static int ck_save(struct ckpt *ck, const dem_fe_t *fe, const struct shotin *in,
  * force rows to the outputs again (f keeps the last frame), and cut the
  * journal back to the checkpoint.  *passes: the passes done; 0 with no
  * checkpoint (a run killed in its first pass starts again). */
-static int ck_resume(struct ckpt *ck, dem_fe_t *fe, struct shotin *in, const dem_mesh_t *m,
+static int ck_resume(struct ckpt *ck, struct blk *b, struct shotin *in, const dem_mesh_t *m,
 		     dem_state_writer_t *w, dem_writer_t *fw, struct fields *fl, long *passes,
 		     int quiet, dem_error_t *e)
 {
@@ -839,7 +1003,7 @@ static int ck_resume(struct ckpt *ck, dem_fe_t *fe, struct shotin *in, const dem
 				     "resume %s it", ck->path, h.forces ? "with" : "without",
 				     h.forces ? "with" : "without");
 	}
-	rc = dem_fe_load(fe, f, e);
+	rc = blk_load(b, f, e);
 	fclose(f);
 	if (rc)
 		return dem_error_set(e, rc, "%s: %s", ck->path, e->msg);
@@ -914,7 +1078,7 @@ static int ck_resume(struct ckpt *ck, dem_fe_t *fe, struct shotin *in, const dem
 	*passes = (long)h.passes;
 	if (!quiet)
 		fprintf(stderr, "%s: resuming after pass %ld (%lld passes done) at t = %.4g s\n",
-			PROG, in->pass, (long long)h.passes, dem_fe_time(fe));
+			PROG, in->pass, (long long)h.passes, blk_time(b));
 	return DEM_OK;
 short_journal:
 	return dem_error_set(e, DEM_EINPUT, "%s: truncated journal (the checkpoint %s names %llu "
@@ -942,43 +1106,43 @@ static void ck_close(struct ckpt *ck, int ok)
 
 /* One pass: place the shots, step until steady or the pass time, write
  * the frame. */
-static int run_pass(dem_fe_t *fe, dem_shotset_t *S, const struct settings *st,
+static int run_pass(struct blk *b, const struct settings *st,
 		    const struct shotin *in, int quiet, dem_state_writer_t *w,
 		    dem_writer_t *fw, struct fields *f, struct ckpt *ck, double *next_report,
 		    dem_error_t *e)
 {
-	double t0 = dem_fe_time(fe), peak = 0;
+	double t0 = blk_time(b), peak = 0;
 	unsigned pass = (unsigned)in->sh[0].pass;
 	int rc;
 
-	if ((rc = dem_shotset_begin(S, in->n, in->sh, dem_fe_coords(fe), e)))
+	if ((rc = sh_begin(b, in->n, in->sh, e)))
 		return rc;
 	for (;;) {
-		double dt, t = dem_fe_time(fe);
-		if ((rc = dem_shotset_prepare(S, dem_fe_coords(fe), dem_fe_velocity(fe), dem_fe_dt(fe), &dt, e)) ||
-		    (rc = dem_fe_step(fe, dt, e)))
+		double dt, t = blk_time(b);
+		if ((rc = sh_prepare(b, &dt, e)) || (rc = blk_step(b, dt, e)))
 			return rc;
 		if (fw) {
-			for (size_t i = 0; i < dem_shotset_count(S); i++) {
-				const dem_shot_body_t *b = dem_shotset_body(S, i);
-				if (!b->contacts)
+			for (size_t i = 0; i < sh_count(b); i++) {
+				const dem_shot_body_t *s = sh_body(b, i);
+				if (!s->contacts)
 					continue;
-				double row[8] = {pass, (double)i, t - t0, b->Fn, b->Ft,
-						 b->F[0], b->F[1], b->F[2]};
+				/* 2D: the plane is the stream's x-z plane */
+				double row[8] = {pass, (double)i, t - t0, s->Fn, s->Ft, s->F[0],
+						 b->fe2 ? 0 : s->F[1], s->F[b->fe2 ? 1 : 2]};
 				if ((rc = dem_writer_row(fw, row, e)) || (rc = ck_force(ck, row, e)))
 					return rc;
 			}
 		}
 		dem_fe_energy_t en;
-		dem_fe_energy(fe, &en);
+		blk_energy(b, &en);
 		peak = fmax(peak, en.kinetic);
-		if (dem_shotset_done(S) && en.kinetic <= st->steady * peak)
+		if (sh_done(b) && en.kinetic <= st->steady * peak)
 			break;
-		if (dem_fe_time(fe) - t0 >= st->pass_time) {
+		if (blk_time(b) - t0 >= st->pass_time) {
 			if (!quiet) {
 				size_t touch, coming;
 				char why[96] = "";
-				if (dem_shotset_holding(S, &touch, &coming) > 0)
+				if (sh_holding(b, &touch, &coming) > 0)
 					snprintf(why, sizeof why, "; shots: %zu in contact, %zu moving "
 						 "down out of contact", touch, coming);
 				fprintf(stderr, "%s: pass %u: not steady after %g s (kinetic "
@@ -990,18 +1154,18 @@ static int run_pass(dem_fe_t *fe, dem_shotset_t *S, const struct settings *st,
 		if (!quiet && dem_wall() > *next_report) {
 			fprintf(stderr, "%s: pass %u: t = %.4g s, step %ld, dt %.3g s, "
 				"kinetic %.4g J (%.2g of peak)\n", PROG, pass,
-				dem_fe_time(fe) - t0, dem_fe_steps(fe), dt, en.kinetic,
+				blk_time(b) - t0, blk_steps(b), dt, en.kinetic,
 				peak > 0 ? en.kinetic / peak : 0);
 			*next_report = dem_wall() + 2;
 		}
 	}
-	fields_get(fe, f);
-	if ((rc = dem_state_write_frame(w, pass, dem_fe_time(fe), f->u, f->sig, f->eps, f->ep, e)))
+	fields_get(b, f);
+	if ((rc = dem_state_write_frame(w, pass, blk_time(b), f->u, f->sig, f->eps, f->ep, e)))
 		return rc;
-	return ck_frame(ck, &st->mesh, pass, dem_fe_time(fe), f, e);
+	return ck_frame(ck, &st->mesh, pass, blk_time(b), f, e);
 }
 
-static int run_shots(dem_fe_t *fe, dem_shotset_t *S, const struct settings *st,
+static int run_shots(struct blk *b, const struct settings *st,
 		     struct shotin *in, int quiet, dem_state_writer_t *w, dem_writer_t *fw,
 		     struct fields *f, struct ckpt *ck, long *passes, dem_error_t *e)
 {
@@ -1010,13 +1174,13 @@ static int run_shots(dem_fe_t *fe, dem_shotset_t *S, const struct settings *st,
 
 	/* *passes: those done before (a resumed run) */
 	while ((k = shotin_pass(in, e)) > 0) {
-		if ((rc = run_pass(fe, S, st, in, quiet, w, fw, f, ck, &next_report, e)))
+		if ((rc = run_pass(b, st, in, quiet, w, fw, f, ck, &next_report, e)))
 			return rc;
 		++*passes;
 		if (!quiet)
 			fprintf(stderr, "%s: pass %lu done at t = %.4g s\n", PROG,
-				in->sh[0].pass, dem_fe_time(fe));
-		if (ck && (rc = ck_save(ck, fe, in, *passes, e)))
+				in->sh[0].pass, blk_time(b));
+		if (ck && (rc = ck_save(ck, b, in, *passes, e)))
 			return rc;
 		if (ck && ck->stop_after == *passes) {
 			/* the testing aid: die as a killed run would, leaving
@@ -1039,8 +1203,7 @@ struct job {
 	dem_scene_t *scene;     /* kept: the checkpoint records it */
 	struct settings st;
 	struct fields f;
-	dem_fe_t *fe;
-	dem_shotset_t *S;
+	struct blk b;           /* the model and its shots, 3D or 2D */
 	struct shotin in;
 	struct ckpt ck;
 	int have_in, have_ck;
@@ -1074,9 +1237,11 @@ static void job_free(struct job *j, int failed)
 	}
 	if (j->have_in)
 		shotin_close(&j->in);
-	dem_shotset_free(j->S);
+	dem_shotset_free(j->b.S);
+	dem_shotset2d_free(j->b.S2);
 	fields_free(&j->f);
-	dem_fe_free(j->fe);
+	dem_fe_free(j->b.fe);
+	dem_fe2_free(j->b.fe2);
 	settings_free(&j->st);
 	dem_scene_free(j->scene);
 }
@@ -1143,6 +1308,38 @@ static int open_shots(const struct cmdline *cl, struct job *j, dem_error_t *e)
 	return DEM_OK;
 }
 
+/* The 2D block's model (explicit2d.h, the options of the 3D one) and its
+ * shots (shotset2d.h). */
+static int build2(struct job *j, dem_error_t *e)
+{
+	struct settings *st = &j->st;
+	dem_fe2_opts_t o;
+	int rc;
+
+	dem_fe2_opts_default(&o);
+	o.mode = st->axisym ? DEM_QUAD4_AXISYM : DEM_QUAD4_PLANE;
+	o.thick = st->axisym ? 1 : st->thick;
+	o.rule = st->fe.rule;
+	o.large = st->fe.large;
+	o.dt_factor = st->fe.dt_factor;
+	o.damping = st->fe.damping;
+	o.hg_stiff = st->fe.hg_stiff;
+	o.hg_visc = st->fe.hg_visc;
+	o.hg_tangent = st->fe.hg_tangent;
+	j->b.m2 = &st->mesh2;
+	if ((rc = dem_fe2_create(&j->b.fe2, &st->mesh2, &st->mat, &o, e)))
+		return rc;
+	dem_shotset2d_opts_t so = {
+		.mode = o.mode, .thick = o.thick, .rho = st->so.rho,
+		.lambda = st->so.lambda, .gap = st->so.gap
+	};
+	if ((rc = dem_shotset2d_create(&j->b.S2, &st->mesh2, dem_fe2_mass(j->b.fe2), &st->cm,
+				       &so, e)))
+		return rc;
+	dem_fe2_set_load(j->b.fe2, dem_shotset2d_hook, j->b.S2);
+	return DEM_OK;
+}
+
 /* The block's model, its load or its shots, and the fields it writes;
  * the setup's time counts from t0. */
 static int build(const struct cmdline *cl, struct job *j, double t0, dem_cost_t *cost,
@@ -1151,21 +1348,30 @@ static int build(const struct cmdline *cl, struct job *j, double t0, dem_cost_t 
 	struct settings *st = &j->st;
 	int rc;
 
-	if ((rc = dem_fe_create(&j->fe, &st->mesh, &st->mat, &st->fe, e)) ||
-	    (st->have_load && (rc = apply_load(j->fe, st, e))))
+	if (st->dim == 2 && (rc = build2(j, e)))
 		return rc;
-	if (st->have_shots) {
-		if ((rc = dem_shotset_create(&j->S, &st->mesh, dem_fe_mass(j->fe), &st->cm, &st->so, e)))
+	if (st->dim == 3 &&
+	    ((rc = dem_fe_create(&j->b.fe, &st->mesh, &st->mat, &st->fe, e)) ||
+	     (st->have_load && (rc = apply_load(j->b.fe, st, e)))))
+		return rc;
+	if (st->dim == 3 && st->have_shots) {
+		if ((rc = dem_shotset_create(&j->b.S, &st->mesh, dem_fe_mass(j->b.fe), &st->cm, &st->so, e)))
 			return rc;
-		dem_fe_set_load(j->fe, dem_shotset_hook, j->S);
+		dem_fe_set_load(j->b.fe, dem_shotset_hook, j->b.S);
 	}
-	if (fields_alloc(&j->f, &st->mesh))
+	if (fields_alloc(&j->f, st))
 		return dem_error_nomem(e, "fields");
 	dem_cost_time(cost, "setup", dem_wall() - t0);
 	if (!cl->com.quiet || cl->com.verbose) {
-		fprintf(stderr, "%s: block of %zu elements (%d x %d x %d), %zu "
-			"nodes; stable step %.3g s\n", PROG, st->mesh.ne, st->mesh.nx,
-			st->mesh.ny, st->mesh.nz, st->mesh.nn, dem_fe_dt(j->fe));
+		if (st->dim == 2)
+			fprintf(stderr, "%s: 2D %s block of %zu elements (%d x %d), %zu "
+				"nodes; stable step %.3g s\n", PROG, st->axisym ? "axisymmetric" :
+				"plane strain", st->mesh2.ne, st->mesh2.nx, st->mesh2.ny,
+				st->mesh2.nn, blk_dt(&j->b));
+		else
+			fprintf(stderr, "%s: block of %zu elements (%d x %d x %d), %zu "
+				"nodes; stable step %.3g s\n", PROG, st->mesh.ne, st->mesh.nx,
+				st->mesh.ny, st->mesh.nz, st->mesh.nn, blk_dt(&j->b));
 		log_effects(st);
 	}
 	return DEM_OK;
@@ -1185,11 +1391,11 @@ static int open_outputs(const struct cmdline *cl, struct job *j, const dem_main_
 		return DEM_OK;
 	j->have_ck = 1;
 	if ((rc = ck_init(&j->ck, cl->checkpoint, j->scene, cl->forces != NULL, &r->cost, e)) ||
-	    (rc = cl->resume ? ck_resume(&j->ck, j->fe, &j->in, &j->st.mesh, j->w, j->fw, &j->f,
+	    (rc = cl->resume ? ck_resume(&j->ck, &j->b, &j->in, &j->st.mesh, j->w, j->fw, &j->f,
 					 &j->passes, cl->com.quiet, e)
 			     : ck_fresh(&j->ck, e)))
 		return rc;
-	dem_fe_stats(j->fe, &j->fs0);
+	blk_stats(&j->b, &j->fs0);
 	return DEM_OK;
 }
 
@@ -1202,10 +1408,10 @@ static int run_job(const struct cmdline *cl, struct job *j, dem_cost_t *cost, de
 	int rc;
 
 	if (st->have_shots)
-		rc = run_shots(j->fe, j->S, st, &j->in, cl->com.quiet, j->w, j->fw, &j->f,
+		rc = run_shots(&j->b, st, &j->in, cl->com.quiet, j->w, j->fw, &j->f,
 			       j->have_ck ? &j->ck : NULL, &j->passes, e);
 	else
-		rc = run(j->fe, st, cl->com.quiet, j->w, &j->f, cost, e);
+		rc = run(&j->b, st, cl->com.quiet, j->w, &j->f, cost, e);
 	if (rc)
 		return rc;
 	j->run_s = dem_wall() - t;
@@ -1247,8 +1453,8 @@ static void report(const struct cmdline *cl, const struct job *j, dem_cost_t *co
 	dem_fe_energy_t en;
 	dem_fe_stats_t fs;
 
-	dem_fe_energy(j->fe, &en);
-	dem_fe_stats(j->fe, &fs);
+	blk_energy(&j->b, &en);
+	blk_stats(&j->b, &fs);
 	/* this process's work (steps stay the run's) */
 	fs.elem_s -= j->fs0.elem_s, fs.node_s -= j->fs0.node_s, fs.elem_cycles -= j->fs0.elem_cycles;
 	if (cl->com.verbose)
@@ -1265,10 +1471,10 @@ static void report(const struct cmdline *cl, const struct job *j, dem_cost_t *co
 	dem_cost_count(cost, "ns_per_elem_cycle",
 		       fs.elem_cycles > 0 ? 1e9 * (fs.elem_s + fs.node_s) / fs.elem_cycles : 0);
 	dem_cost_count(cost, "energy_error", en.scale > 0 ? fabs(en.balance) / en.scale : 0);
-	if (!j->S)
+	if (!j->b.S && !j->b.S2)
 		return;
 	dem_shotset_stats_t ss;
-	dem_shotset_stats(j->S, &ss);
+	sh_stats(&j->b, &ss);
 	if (!cl->com.quiet && run_s > 0)
 		fprintf(stderr, "%s: time: elements %.0f%%, contact (%s) %.0f%%, "
 			"candidates %.0f%%, shot motion %.0f%%, other %.0f%%\n", PROG,

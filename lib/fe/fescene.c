@@ -392,3 +392,76 @@ int dem_scene_block(dem_scene_t *s, dem_mesh_t *m, dem_error_t *e)
 	}
 	return DEM_OK;
 }
+
+int dem_scene_block2(dem_scene_t *s, dem_mesh2_t *m, int *axisym, double *thick,
+		     dem_error_t *e)
+{
+	static const char *const bcs[] = {"free", "fixed", "normal", NULL};
+	static const char *const modes[] = {"plane", "axisym", NULL};
+	static const char *const edge_key[4] = {
+		"block.bc.xmin", "block.bc.xmax", "block.bc.bottom", "block.bc.top"
+	};
+	static const int edge_def[4] = {DEM_BC_NORMAL, DEM_BC_NORMAL, DEM_BC_FIXED,
+		DEM_BC_FREE};
+	double size[2] = {NAN, NAN}, fine, h = NAN, depth, ratio, hmax;
+	dem_bc_t bc[4];
+	int rc;
+
+	*thick = 0;
+	if ((rc = dem_scene_choice(s, "block.mode", modes, 0, axisym, e)) ||
+	    (!*axisym && (rc = dem_scene_quantity(s, "block.thickness", DEM_DIM_LENGTH,
+						  1e-3, DEM_SCENE_GT0, HUGE_VAL, thick, e))) ||
+	    (rc = dem_scene_vector(s, "block.size", DEM_DIM_LENGTH, 2, NULL,
+				   DEM_SCENE_GT0, HUGE_VAL, size, e)) ||
+	    (rc = dem_scene_quantity(s, "block.element", DEM_DIM_LENGTH, NAN,
+				     DEM_SCENE_GT0, HUGE_VAL, &h, e)))
+		return rc;
+	if (isnan(size[0]))
+		return dem_scene_error(s, "block.size", e, "missing: the 2D block "
+				       "needs its size [width, thickness]");
+	if (isnan(h))
+		return dem_scene_error(s, "block.element", e, "missing: the "
+				       "block needs the element size under the "
+				       "impact area");
+	if ((rc = dem_scene_quantity(s, "block.fine", DEM_DIM_LENGTH, size[0],
+				     DEM_SCENE_GT0, HUGE_VAL, &fine, e)) ||
+	    (rc = dem_scene_quantity(s, "block.fine_depth", DEM_DIM_LENGTH,
+				     size[1], DEM_SCENE_GT0, HUGE_VAL, &depth, e)) ||
+	    (rc = dem_scene_quantity(s, "block.ratio", DEM_DIM_NONE, 1.2, 1,
+				     10, &ratio, e)) ||
+	    (rc = dem_scene_quantity(s, "block.max_element", DEM_DIM_LENGTH, 0,
+				     0, HUGE_VAL, &hmax, e)))
+		return rc;
+	if (fine > size[0])
+		return dem_scene_error(s, "block.fine", e, "the fine region (%g m) "
+				       "is wider than the block (%g m)", fine, size[0]);
+	if (depth > size[1])
+		return dem_scene_error(s, "block.fine_depth", e, "%g m is deeper "
+				       "than the block (%g m)", depth, size[1]);
+	if (hmax != 0 && hmax < h)
+		return dem_scene_error(s, "block.max_element", e, "%g m is "
+				       "smaller than the element size (%g m)",
+				       hmax, h);
+	for (int f = 0; f < 4; f++) {
+		int v;
+
+		if ((rc = dem_scene_choice(s, edge_key[f], bcs, edge_def[f], &v, e)))
+			return rc;
+		bc[f] = (dem_bc_t)v;
+	}
+	dem_axis_t ax[2] = {
+		*axisym ? (dem_axis_t){0, size[0], 0, fine, h, ratio, hmax}
+			: (dem_axis_t){-size[0] / 2, size[0] / 2, -fine / 2, fine / 2,
+				       h, ratio, hmax},
+		{-size[1], 0, -depth, 0, h, ratio, hmax}
+	};
+	if (dem_mesh2_rect(m, ax, e)) {
+		char msg[sizeof e->msg];
+
+		memcpy(msg, e->msg, sizeof msg);
+		dem_error_clear(e);
+		return dem_scene_error(s, "block", e, "%s", msg);
+	}
+	dem_mesh2_set_bc(m, bc);
+	return DEM_OK;
+}

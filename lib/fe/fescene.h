@@ -24,6 +24,7 @@
 #include "fe/material.h"
 #include "io/scene.h"
 #include "mesh/mesh.h"
+#include "mesh/mesh2.h"
 
 /* Read the material section and build the material.  need_rho: the
  * density is required (explicit dynamics); otherwise it defaults to 0.
@@ -50,5 +51,27 @@ int dem_scene_material(dem_scene_t *s, int need_rho, dem_mat_t *m,
  *
  * Builds the mesh with its constraints; DEM_EINPUT naming the key. */
 int dem_scene_block(dem_scene_t *s, dem_mesh_t *m, dem_error_t *e);
+
+/* The `block` section of a 2D scene (`dim: 2`, demshot(1)): the block in
+ * the x-y plane of mesh2.h, y from -thickness to 0 (the top edge, y = 0,
+ * the peened surface):
+ *
+ *   block:
+ *     mode: plane               # plane (strain) or axisym (default plane)
+ *     size: [60 mm, 40 mm]      # width and thickness (required)
+ *     thickness: 1 mm           # plane: the slab's out-of-plane extent
+ *                               # (default 1 mm); axisym: not read
+ *     element: 0.5 mm           # as in 3D
+ *     fine: 20 mm               # fine region along x (default: all)
+ *     fine_depth, ratio, max_element   as in 3D
+ *     bc: {xmin, xmax, bottom, top}    fixed | normal | free (defaults
+ *                               normal, normal, fixed, free)
+ *
+ * plane: x from -width/2 to width/2, the fine region centred; axisym: x
+ * is the radius r from 0 (the axis) to width, the fine region from the
+ * axis.  *axisym: 1 for axisym; *thick: the plane thickness.  DEM_EINPUT
+ * naming the key. */
+int dem_scene_block2(dem_scene_t *s, dem_mesh2_t *m, int *axisym, double *thick,
+		     dem_error_t *e);
 
 #endif

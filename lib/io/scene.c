@@ -42,7 +42,7 @@
  * it here. */
 static const char *const known_sections[] = {
 	"pack", "detect", "shot", "block", "material", "contact", "run",
-	"load", "profile", "form", "plate", "output", "meta", "bodies", "walls", NULL
+	"load", "profile", "form", "plate", "output", "meta", "bodies", "walls", "dim", NULL
 };
 
 static int in_list(const char *const *list, const char *name)

@@ -150,12 +150,20 @@ int dem_mesh_axes(const dem_axis_t *ax, int na, double **g, int *n, dem_error_t 
 int dem_mesh_box(dem_mesh_t *m, const dem_axis_t ax[3], dem_error_t *e)
 {
 	double *g[3];
-	int n[3], i, j, k;
-	size_t nn, ne, p;
+	int n[3];
 
 	memset(m, 0, sizeof *m);
 	if (dem_mesh_axes(ax, 3, g, n, e) != DEM_OK)
 		return e->code;
+	return dem_mesh_grid(m, g, n, e);
+}
+
+int dem_mesh_grid(dem_mesh_t *m, double *g[3], const int n[3], dem_error_t *e)
+{
+	int i, j, k;
+	size_t nn, ne, p;
+
+	memset(m, 0, sizeof *m);
 	nn = (size_t)(n[0] + 1) * (size_t)(n[1] + 1) * (size_t)(n[2] + 1);
 	ne = (size_t)n[0] * (size_t)n[1] * (size_t)n[2];
 	if (nn > UINT32_MAX) {

@@ -76,6 +76,9 @@ typedef struct dem_mesh {
 /* Build the mesh of the box given by three axes.  DEM_EINPUT for a bad
  * axis, DEM_EIO when out of memory. */
 int dem_mesh_box(dem_mesh_t *m, const dem_axis_t ax[3], dem_error_t *e);
+/* The same from given grid lines g[a] (n[a] + 1 increasing values each,
+ * malloc'ed; the mesh takes them over, and frees them on error too). */
+int dem_mesh_grid(dem_mesh_t *m, double *g[3], const int n[3], dem_error_t *e);
 void dem_mesh_free(dem_mesh_t *m);
 
 /* Set the node constraints from the six faces' conditions (indexed by enum

@@ -93,3 +93,51 @@ size_t dem_mesh2_top_segments(const dem_mesh2_t *m, double x0, double x1, uint32
 	}
 	return n;
 }
+
+int dem_mesh2_extrude(const dem_mesh2_t *m2, double w, dem_mesh_t *m, dem_error_t *e)
+{
+	double *g[3];
+	int n[3] = { m2->nx, 1, m2->ny };
+
+	g[0] = malloc(((size_t)n[0] + 1) * sizeof *g[0]);
+	g[1] = malloc(2 * sizeof *g[1]);
+	g[2] = malloc(((size_t)n[2] + 1) * sizeof *g[2]);
+	if (!g[0] || !g[1] || !g[2]) {
+		free(g[0]), free(g[1]), free(g[2]);
+		memset(m, 0, sizeof *m);
+		return dem_error_nomem(e, "mesh");
+	}
+	memcpy(g[0], m2->gx, ((size_t)n[0] + 1) * sizeof *g[0]);
+	memcpy(g[2], m2->gy, ((size_t)n[2] + 1) * sizeof *g[2]);
+	g[1][0] = -w / 2, g[1][1] = w / 2;
+	return dem_mesh_grid(m, g, n, e);
+}
+
+static void lift6(const double *a, double *b)
+{
+	b[0] = a[0], b[1] = a[2], b[2] = a[1];
+	b[3] = 0, b[4] = 0, b[5] = a[3];
+}
+
+void dem_mesh2_lift(const dem_mesh2_t *m2, const double *u2, const double *sig2,
+		    const double *eps2, const double *ep2, double *u, double *sig,
+		    double *eps, double *ep)
+{
+	size_t row = (size_t)m2->nx + 1;
+	for (int k = 0; u2 && k <= m2->ny; k++)
+		for (int i = 0; i <= m2->nx; i++) {
+			size_t p = dem_mesh2_node(m2, i, k);
+			for (int j = 0; j < 2; j++) {
+				double *q = u + 3 * ((size_t)i + row * ((size_t)j + 2 * (size_t)k));
+				q[0] = u2[2 * p], q[1] = 0, q[2] = u2[2 * p + 1];
+			}
+		}
+	for (size_t el = 0; el < m2->ne; el++) {
+		if (sig2)
+			lift6(sig2 + 6 * el, sig + 6 * el);
+		if (eps2)
+			lift6(eps2 + 6 * el, eps + 6 * el);
+		if (ep2)
+			ep[el] = ep2[el];
+	}
+}

@@ -68,4 +68,20 @@ void dem_mesh2_gather(const dem_mesh2_t *m, size_t el, const double *u, double x
  * numbers per segment to seg (unless NULL) and returns the count. */
 size_t dem_mesh2_top_segments(const dem_mesh2_t *m, double x0, double x1, uint32_t *seg);
 
+/* The 2D mesh as a 3D one (mesh.h) for the streams the 3D programs read
+ * (the state stream, VTU): the 2D x-y plane is the 3D x-z plane, the
+ * element layer one element thick in y, from -w/2 to w/2.  Node (i, k) of
+ * m2 becomes the 3D nodes (i, 0, k) and (i, 1, k); element (i, k) the hex
+ * (i, 0, k), the same number.  No constraints.  DEM_EIO without memory. */
+int dem_mesh2_extrude(const dem_mesh2_t *m2, double w, dem_mesh_t *m, dem_error_t *e);
+
+/* The 2D fields (explicit2d.h's: u 2 per node, sig and eps 6 per element
+ * with zz out of plane, ep 1) on the extruded mesh m: u = (u_x, 0, u_y) on
+ * both nodes of a pair; sig = (xx, zz, yy, 0, 0, xy) of the 2D one, as
+ * its x, y, z are the 3D x, z, y (eps likewise, ep copied).  Any of
+ * the four pairs may be NULL. */
+void dem_mesh2_lift(const dem_mesh2_t *m2, const double *u2, const double *sig2,
+		    const double *eps2, const double *ep2, double *u, double *sig,
+		    double *eps, double *ep);
+
 #endif

@@ -833,19 +833,19 @@ static void test_check_sections(void **state)
 		   "strip.yaml:5:1: unknown section 'pakc' (did you mean 'pack'?); "
 		   "known sections: pack, detect, shot, block, "
 		   "material, contact, run, load, profile, form, plate, "
-		   "output, meta, bodies, walls");
+		   "output, meta, bodies, walls, dim");
 	load_fails("block:\n  element: 0.1 mm\nmeta:\n  title: x\n  blokc: 1\n"
 		   "blokc:\n  size: 1 mm\n", DEM_EINPUT,
 		   "strip.yaml:6:1: unknown section 'blokc' (did you mean 'block'?); "
 		   "known sections: pack, detect, shot, block, "
 		   "material, contact, run, load, profile, form, plate, "
-		   "output, meta, bodies, walls");
+		   "output, meta, bodies, walls, dim");
 	/* no hint for a word that is not near a section */
 	load_fails("pack:\n  n: 5\nfrobnicate: 1\n", DEM_EINPUT,
 		   "strip.yaml:3:1: unknown section 'frobnicate'; "
 		   "known sections: pack, detect, shot, block, "
 		   "material, contact, run, load, profile, form, plate, "
-		   "output, meta, bodies, walls");
+		   "output, meta, bodies, walls, dim");
 
 	/* a section that is not a mapping */
 	s = load("pack: 5\n");
@@ -886,7 +886,7 @@ static void test_check_override(void **state)
 	assert_string_equal(e.msg, "command line: --blob: unknown section "
 			    "'blob'; known sections: pack, detect, shot, block, "
 			    "material, contact, run, load, profile, form, plate, "
-			    "output, meta, bodies, walls");
+			    "output, meta, bodies, walls, dim");
 	dem_scene_free(s);
 }
 
