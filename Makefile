@@ -153,8 +153,10 @@ TEST_ENV = DEM_TEST_COMPDIR="$(abspath $(BUILD)/completion)" DEM_TEST_CC="$(CC)"
              includedir=$(includedir) mandir=$(mandir) pkgdatadir=$(pkgdatadir) \
              pkgconfigdir=$(pkgconfigdir) bashcompdir=$(bashcompdir)"
 
+# make check builds on every core unless make was given -j itself
+CHECK_JOBS = $(shell nproc 2>/dev/null || echo 1)
 check: deps
-	@$(MAKE) --no-print-directory test
+	@$(MAKE) --no-print-directory $(if $(filter -j%,$(MAKEFLAGS)),,-j$(CHECK_JOBS)) test
 
 # check without make deps (the Debian package build runs this one)
 test: build $(TESTS) $(FUZZER)
