@@ -298,6 +298,22 @@ out:
 	return rc;
 }
 
+/* The grading keys against the block, for the 3D and the 2D block: the
+ * fine depth within the thickness, the largest element not below the
+ * fine one. */
+static int check_grading(dem_scene_t *s, double depth, double thickness, double h,
+			 double hmax, dem_error_t *e)
+{
+	if (depth > thickness)
+		return dem_scene_error(s, "block.fine_depth", e, "%g m is deeper "
+				       "than the block (%g m)", depth, thickness);
+	if (hmax != 0 && hmax < h)
+		return dem_scene_error(s, "block.max_element", e, "%g m is "
+				       "smaller than the element size (%g m)",
+				       hmax, h);
+	return DEM_OK;
+}
+
 int dem_scene_block(dem_scene_t *s, dem_mesh_t *m, dem_error_t *e)
 {
 	static const char *const bcs[] = {"free", "fixed", "normal",
@@ -341,13 +357,8 @@ int dem_scene_block(dem_scene_t *s, dem_mesh_t *m, dem_error_t *e)
 					       "region (%g m along %c) is larger "
 					       "than the block (%g m)", fine[a],
 					       "xy"[a], size[a]);
-	if (depth > size[2])
-		return dem_scene_error(s, "block.fine_depth", e, "%g m is deeper "
-				       "than the block (%g m)", depth, size[2]);
-	if (hmax != 0 && hmax < h)
-		return dem_scene_error(s, "block.max_element", e, "%g m is "
-				       "smaller than the element size (%g m)",
-				       hmax, h);
+	if ((rc = check_grading(s, depth, size[2], h, hmax, e)))
+		return rc;
 	for (a = 0; a < 2; a++)
 		ax[a] = (dem_axis_t){-size[a] / 2, size[a] / 2, -fine[a] / 2,
 				     fine[a] / 2, h, ratio, hmax};
@@ -435,13 +446,8 @@ int dem_scene_block2(dem_scene_t *s, dem_mesh2_t *m, int *axisym, double *thick,
 	if (fine > size[0])
 		return dem_scene_error(s, "block.fine", e, "the fine region (%g m) "
 				       "is wider than the block (%g m)", fine, size[0]);
-	if (depth > size[1])
-		return dem_scene_error(s, "block.fine_depth", e, "%g m is deeper "
-				       "than the block (%g m)", depth, size[1]);
-	if (hmax != 0 && hmax < h)
-		return dem_scene_error(s, "block.max_element", e, "%g m is "
-				       "smaller than the element size (%g m)",
-				       hmax, h);
+	if ((rc = check_grading(s, depth, size[1], h, hmax, e)))
+		return rc;
 	for (int f = 0; f < 4; f++) {
 		int v;
 
