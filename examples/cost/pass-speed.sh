@@ -1,34 +1,49 @@
 #!/bin/sh
-# pass-speed.sh OUT BASE RUNS - the Ch. 8.6 pass (pass86.yaml, 16 shots
-# on the offset grid, frictionless, 2 threads) by this tree's demshot and
-# by the demshot of the git revision BASE, in turn, RUNS times each, and
-# the same pass on an elastic block (pass86.yaml without its yield and
+# pass-speed.sh OUT BASE RUNS [SAME] - the Ch. 8.6 pass (pass86.yaml, 16
+# shots on the offset grid, frictionless, 2 threads) by this tree's demshot
+# and by the demshot of the git revision BASE, in turn, RUNS times each,
+# and the same pass on an elastic block (pass86.yaml without its yield and
 # hardening: the elastic cycle, the floor of the element loop).  Issue 17,
 # item 3: a ratio measured in one run, not two figures from two days.
+# SAME (optional): a later revision whose pass gives this tree's results
+# (the steps the same), run on the plastic block in the same turns: the
+# speed-up of the changes that leave the results alone, apart from those
+# that change them (speed-report.sh says which is which).
 #
-# BASE is built from `git archive BASE` into OUT/base (its bin/demshot);
-# nothing of this tree is touched.  Rows into OUT/speed.tsv:
+# Each revision is built from `git archive REV` into OUT/base-REV (its
+# bin/demshot); nothing of this tree is touched.  Rows into OUT/speed.tsv:
 #   build config run wall_s element_loop_s node_loop_s contact_s steps
 #   ns_per_elem_cycle load
-# and each run's state stream as OUT/BUILD-CONFIG.state (the last run's),
-# from which speed-report.sh compares the residual profiles.
+# (build: base, same or new) and each run's state stream as
+# OUT/BUILD-CONFIG.state (the last run's), from which speed-report.sh
+# compares the residual profiles.
 set -eu
-out=$1 base=$2 runs=$3
+out=$1 base=$2 runs=$3 same=${4:-}
 top=$(cd ../.. && pwd)
 . ../lib.sh
 mkdir -p "$out"
 
-# the baseline's demshot (built once per revision)
-rev=$(git -C "$top" rev-parse --short "$base")
-if [ ! -x "$out/base-$rev/bin/demshot" ]; then
-	echo "pass-speed: building demshot of $rev into $out/base-$rev" >&2
-	rm -rf "$out/base-$rev"
-	mkdir -p "$out/base-$rev"
-	git -C "$top" archive "$rev" | tar -x -C "$out/base-$rev"
-	make -C "$out/base-$rev" -j2 bin/demshot > "$out/base-$rev.build.log" 2>&1 ||
-		{ tail -20 "$out/base-$rev.build.log" >&2; exit 1; }
-fi
+# build_rev REV: the demshot of REV into OUT/base-REV (once per revision);
+# prints the short revision
+build_rev() {
+	r=$(git -C "$top" rev-parse --short "$1")
+	if [ ! -x "$out/base-$r/bin/demshot" ]; then
+		echo "pass-speed: building demshot of $r into $out/base-$r" >&2
+		rm -rf "$out/base-$r"
+		mkdir -p "$out/base-$r"
+		git -C "$top" archive "$r" | tar -x -C "$out/base-$r"
+		make -C "$out/base-$r" -j2 bin/demshot > "$out/base-$r.build.log" 2>&1 ||
+			{ tail -20 "$out/base-$r.build.log" >&2; exit 1; }
+	fi
+	echo "$r"
+}
+rev=$(build_rev "$base")
 echo "$rev" > "$out/base.txt"
+rm -f "$out/same.txt" "$out/same-plastic.state"
+if [ -n "$same" ]; then
+	srev=$(build_rev "$same")
+	echo "$srev" > "$out/same.txt"
+fi
 
 "$top"/bin/dempack shots --grid 4 --passes 1 --area 5.6mm:5.6mm --speed 46.5 \
 	--shot-radius 0.7mm --seed 1 > "$out/shots.txt" 2> /dev/null
@@ -41,9 +56,13 @@ r=1
 while [ "$r" -le "$runs" ]; do
 	for config in plastic elastic; do
 		# in turn, so that the load of the moment falls on both alike
-		for build in base new; do
+		for build in base same new; do
 			prog=$top/bin/demshot
-			[ "$build" = base ] && prog=$out/base-$rev/bin/demshot
+			case $build in
+			base) prog=$out/base-$rev/bin/demshot ;;
+			same) [ -n "$same" ] && [ "$config" = plastic ] || continue
+			      prog=$out/base-$srev/bin/demshot ;;
+			esac
 			echo "pass-speed: run $r of $runs: $build $config" >&2
 			load=$(loadavg)
 			"$prog" -s "$out/$config.yaml" --threads 2 -o "$out/$build-$config.state" \
