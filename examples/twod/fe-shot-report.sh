@@ -2,7 +2,8 @@
 # fe-shot-report.sh OUT [H...] - the Markdown section of the rigid DE disk
 # against the FE shot (fe-shot.sh's outputs in OUT): per run the peak
 # contact force (N per mm: the slab is 1 mm thick), its time and the
-# contact's duration (the force history's first and last rows), the
+# contact's duration (the force history's first and last rows), the mean
+# step (the pass's end over demshot's steps), the
 # most compressive residual sxx on the centre line and its depth, its
 # difference from the DE disk's, and the cost (demshot's cost line); then
 # the profiles side by side.  The issue's acceptance: the FE shot's peak
@@ -38,8 +39,8 @@ echo "in node-to-segment penalty contact whose pressure is that law's"
 echo "Winkler form (lib/shot/feshot2d.h), contact damping 0.3, no friction;"
 echo "both run to 200 us (fe-shot.sh).  Forces in N per mm."
 echo
-echo "| run | shot elements | steps | wall s | CPU s | peak force | at (us) | contact (us) | peak sxx (MPa) | depth (mm) | sxx vs DE |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|"
+echo "| run | shot elements | steps | step (ns) | wall s | CPU s | peak force | at (us) | contact (us) | peak sxx (MPa) | depth (mm) | sxx vs DE |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
 for r in "$@"; do
 	read -r pk dp <<EOT
 $(peak "$r")
@@ -51,8 +52,11 @@ EOT
 $(cost_field "$out/$r.log" wall_s cpu_s steps shot_elements)
 EOT
 	d=$(awk -v a="$pk" -v b="$dpk" 'BEGIN { printf "%+.1f %%", 100 * (a / b - 1) }')
+	# the mean step: the pass's end over the steps
+	dt=$(sed -n 's/^demshot: pass 0 done at t = \([^ ]*\) s$/\1/p' "$out/$r.log" | tail -n 1 |
+		awk -v n="$s" '{ printf "%.1f", 1e9 * $1 / n }')
 	case $r in de) name="DE rigid disk" ne="-" ;; *) name="FE shot, ${r#fe-} mm at the rim" ;; esac
-	echo "| $name | $ne | $s | $w | $c | $fm | $tf | $tc | $pk | $dp | $d |"
+	echo "| $name | $ne | $s | $dt | $w | $c | $fm | $tf | $tc | $pk | $dp | $d |"
 done
 echo
 worst=0

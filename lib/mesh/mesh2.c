@@ -1,11 +1,27 @@
-/* mesh2.c - structured quadrilateral meshes of a rectangle (see mesh2.h). */
+/* mesh2.c - quadrilateral meshes of a rectangle and of a disk (see
+ * mesh2.h). */
 #include "mesh/mesh2.h"
-
-#include "core/consts.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "core/consts.h"
+
+/* The node and element arrays of nn nodes and ne elements (fix zero);
+ * on failure the mesh freed. */
+static int mesh2_alloc(dem_mesh2_t *m, size_t nn, size_t ne, const char *what, dem_error_t *e)
+{
+	m->nn = nn, m->ne = ne;
+	m->X = malloc(2 * nn * sizeof *m->X);
+	m->quad = malloc(4 * ne * sizeof *m->quad);
+	m->fix = calloc(nn, sizeof *m->fix);
+	if (!m->X || !m->quad || !m->fix) {
+		dem_mesh2_free(m);
+		return dem_error_nomem(e, what);
+	}
+	return DEM_OK;
+}
 
 int dem_mesh2_rect(dem_mesh2_t *m, const dem_axis_t ax[2], dem_error_t *e)
 {
@@ -23,14 +39,8 @@ int dem_mesh2_rect(dem_mesh2_t *m, const dem_axis_t ax[2], dem_error_t *e)
 		return dem_error_set(e, DEM_EINPUT, "mesh: %zu nodes are more than a mesh can number (%u)",
 				     nn, UINT32_MAX);
 	}
-	m->nn = nn, m->ne = ne;
-	m->X = malloc(2 * nn * sizeof *m->X);
-	m->quad = malloc(4 * ne * sizeof *m->quad);
-	m->fix = calloc(nn, sizeof *m->fix);
-	if (!m->X || !m->quad || !m->fix) {
-		dem_mesh2_free(m);
-		return dem_error_nomem(e, "mesh");
-	}
+	if (mesh2_alloc(m, nn, ne, "mesh", e))
+		return e->code;
 	for (int j = 0; j <= m->ny; j++)
 		for (int i = 0; i <= m->nx; i++) {
 			size_t p = dem_mesh2_node(m, i, j);
@@ -185,14 +195,8 @@ int dem_mesh2_disk(dem_mesh2_t *m, double R, double h, const double c[2], size_t
 	int n = (int)fn, nm = (int)fmax(1, round((R - a) / h));
 	size_t nn = 4 * (size_t)n * ((size_t)nm + 1) + (size_t)(n - 1) * (size_t)(n - 1);
 	size_t ne = 4 * (size_t)n * (size_t)nm + (size_t)n * (size_t)n;
-	m->nn = nn, m->ne = ne;
-	m->X = malloc(2 * nn * sizeof *m->X);
-	m->quad = malloc(4 * ne * sizeof *m->quad);
-	m->fix = calloc(nn, sizeof *m->fix);
-	if (!m->X || !m->quad || !m->fix) {
-		dem_mesh2_free(m);
-		return dem_error_nomem(e, "disk mesh");
-	}
+	if (mesh2_alloc(m, nn, ne, "disk mesh", e))
+		return e->code;
 	/* the blocks: block k is block 0 turned by k quarter turns */
 	static const double rot[4][4] = { { 1, 0, 0, 1 }, { 0, -1, 1, 0 }, { -1, 0, 0, -1 },
 					  { 0, 1, -1, 0 } };
