@@ -22,10 +22,10 @@
  *    same block with the same law (the penalty is that law's Winkler
  *    form, feshot2d.h): peak force and contact time within 5 %, the
  *    tolerance of test_shotset2d.c's rigid drop against the closed form of
- *    the law at the same ratio of contact width to elements, and the FE
- *    shot within 5 % of that closed form too, d = (5 M v^2 / (4 k))^(2/5),
- *    F = k d^(3/2), t_c = 2.94327 d / v (the block's own compliance is a
- *    few % of the approach);
+ *    the law, and the DE disk within 5 % of that closed form, as there,
+ *    d = (5 M v^2 / (4 k))^(2/5), F = k d^(3/2), t_c = 2.94327 d / v (the
+ *    block's own compliance is a few % of the approach, so the closed
+ *    form is not the FE shot's reference: its difference is printed);
  *  - refusals: a law not of m = 1.5, friction, an axisymmetric block, two
  *    shots in a pass.
  * Material: steel (E 210 GPa, nu 0.3, 7800 kg/m^3), elastic.
@@ -304,7 +304,7 @@ static void test_drop(void **state)
 	int nb = SLOW_CASES(8, 4);
 	drop_init(&d, nb);
 	dem_feshot2d_opts_t o;
-	fe_opts(&d, 100, d.b / SLOW_CASES(4, 2), &o);
+	fe_opts(&d, 100, d.b / 4, &o);  /* 4 rim segments on the half width */
 	res_t rf, rd;
 	drop_run(&d, &o, &rf);
 	drop_run(&d, NULL, &rd);
@@ -322,8 +322,8 @@ static void test_drop(void **state)
 	       100 * (tf / d.tc - 1), rf.steps, rf.ne, rd.steps, rd.ne);
 	assert_true(fabs(rf.Fmax / rd.Fmax - 1) <= 0.05);
 	assert_true(fabs(tf / td - 1) <= 0.05);
-	assert_true(fabs(rf.Fmax / d.Fc - 1) <= 0.05);
-	assert_true(fabs(tf / d.tc - 1) <= 0.05);
+	assert_true(fabs(rd.Fmax / d.Fc - 1) <= 0.05);
+	assert_true(fabs(td / d.tc - 1) <= 0.05);
 	drop_free(&d);
 }
 
