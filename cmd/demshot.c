@@ -166,6 +166,9 @@ struct settings {
 	double pass_time, steady;
 	int have_area;          /* the shot stream's impact area */
 	double area[4];
+	/* 2D plane strain: FE shots (shot.model: fe, feshot2d.h) */
+	int fe_shot;
+	double fe_ratio, fe_element;
 };
 
 static void settings_free(struct settings *st)
@@ -241,6 +244,7 @@ static int read_shots(dem_scene_t *s, int accuracy, struct settings *st, dem_err
 	/* 2D: the overlap area or contact width factor of disk.h (Eqs. 3.10,
 	 * 3.11); axisymmetric: the ring's surface (shotset2d.h), not chosen */
 	static const char *const partials2[] = {"area", "width", NULL};
+	static const char *const models[] = {"rigid", "fe", NULL};
 	const int plane2 = st->dim == 2 && !st->axisym;
 	dem_contact_param_t p = {0};
 	double m, alpha, h = HUGE_VAL;
@@ -269,7 +273,19 @@ static int read_shots(dem_scene_t *s, int accuracy, struct settings *st, dem_err
 	    dem_scene_quantity(s, "run.pass_time", DEM_DIM_TIME, 200e-6, DEM_SCENE_GT0,
 			       HUGE_VAL, &st->pass_time, e) ||
 	    dem_scene_quantity(s, "run.steady", DEM_DIM_NONE, 0.01, DEM_SCENE_GT0, 1,
-			       &st->steady, e))
+			       &st->steady, e) ||
+	    dem_scene_choice(s, "shot.model", models, 0, &st->fe_shot, e))
+		return e->code;
+	if (st->fe_shot && !plane2)
+		return dem_scene_error(s, "shot.model", e, "FE shots need a plane strain block "
+				       "(dim: 2, block.mode: plane)");
+	/* the FE shot of Ch. 7.4: E_s = 100 E "to approximately represent a
+	 * rigid shot"; its element at the rim that of the block's surface */
+	if (st->fe_shot &&
+	    (dem_scene_quantity(s, "shot.modulus_ratio", DEM_DIM_NONE, 100, DEM_SCENE_GT0, HUGE_VAL,
+				&st->fe_ratio, e) ||
+	     dem_scene_quantity(s, "shot.element", DEM_DIM_LENGTH, h, DEM_SCENE_GT0, HUGE_VAL,
+				&st->fe_element, e)))
 		return e->code;
 	if (plane2) {
 		/* a disk's law per unit thickness (law.h dim = 2); hertz: the
@@ -294,6 +310,17 @@ static int read_shots(dem_scene_t *s, int accuracy, struct settings *st, dem_err
 				       DEM_SCENE_GT0, HUGE_VAL, &p.kt_ratio, e))
 			return e->code;
 	}
+	/* what the FE shot's penalty can be (feshot2d.h), said at its key */
+	if (st->fe_shot && law == 1)
+		return dem_scene_error(s, "contact.law", e, "an FE shot's penalty is the Winkler "
+				       "form of the power law of m = 1.5, not the hertz law");
+	if (st->fe_shot && m != DEM_LAW_M_HERTZ)
+		return dem_scene_error(s, "contact.m", e, "an FE shot's penalty is the Winkler "
+				       "form of the power law of m = 1.5 (got %g)", m);
+	if (st->fe_shot && dem_scene_has(s, "contact.friction"))
+		return dem_scene_error(s, "contact.friction", e, "no friction with an FE shot");
+	if (st->fe_shot && dem_scene_has(s, "contact.unload"))
+		return dem_scene_error(s, "contact.unload", e, "no hysteresis with an FE shot");
 	if (dem_scene_has(s, "contact.damping") && dem_scene_has(s, "contact.unload"))
 		return dem_scene_error(s, "contact.unload", e, "give one energy loss: "
 				       "damping (viscous) or unload (hysteresis)");
@@ -432,7 +459,11 @@ static void log_effects(const struct settings *st)
 	if (st->xi >= 0)
 		fprintf(stderr, ", damping %g of critical", st->xi);
 	fprintf(stderr, "%s", st->have_load ? ", pressure load" : "");
-	if (st->have_shots)
+	if (st->have_shots && st->fe_shot)
+		fprintf(stderr, ", shots: FE disks (E_s = %g E, element %g m), node-to-segment "
+			"penalty, the Winkler form of the contact %s", st->fe_ratio, st->fe_element,
+			st->cm.effects);
+	else if (st->have_shots)
 		fprintf(stderr, ", shots: contact %s, %s%s, lambda %g",
 			st->cm.effects, st->dim == 3 ? "sphere/sphere" : st->axisym ?
 			"one sphere on the axis" : "disk/disk", st->dim == 3 && st->cm.sepfix ?
@@ -1329,9 +1360,13 @@ static int build2(struct job *j, dem_error_t *e)
 	j->b.m2 = &st->mesh2;
 	if ((rc = dem_fe2_create(&j->b.fe2, &st->mesh2, &st->mat, &o, e)))
 		return rc;
+	dem_feshot2d_opts_t fo = {
+		.element = st->fe_element, .E = st->fe_ratio * st->mat.E, .nu = st->mat.nu,
+		.rho = st->so.rho, .fe = o
+	};
 	dem_shotset2d_opts_t so = {
 		.mode = o.mode, .thick = o.thick, .rho = st->so.rho,
-		.lambda = st->so.lambda, .gap = st->so.gap
+		.lambda = st->so.lambda, .gap = st->so.gap, .fe = st->fe_shot ? &fo : NULL
 	};
 	if ((rc = dem_shotset2d_create(&j->b.S2, &st->mesh2, dem_fe2_mass(j->b.fe2), &st->cm,
 				       &so, e)))
@@ -1473,6 +1508,9 @@ static void report(const struct cmdline *cl, const struct job *j, dem_cost_t *co
 	dem_cost_count(cost, "energy_error", en.scale > 0 ? fabs(en.balance) / en.scale : 0);
 	if (!j->b.S && !j->b.S2)
 		return;
+	const dem_feshot2d_t *F = j->b.S2 ? dem_shotset2d_feshot(j->b.S2) : NULL;
+	if (F && dem_feshot2d_model(F))
+		dem_cost_count(cost, "shot_elements", (double)dem_feshot2d_mesh(F)->ne);
 	dem_shotset_stats_t ss;
 	sh_stats(&j->b, &ss);
 	if (!cl->com.quiet && run_s > 0)

@@ -5,8 +5,7 @@
 # Hertz, the two partial contact schemes, the ringing of the block, and
 # the duration question (README.md).  Nothing typed in: every figure is
 # read from the runs' files (the model's data through params.sh).  The FE
-# shot's section is written when OUT/fe-2.5.row is there and skipped when
-# it is not.
+# shot's section is FE-SHOT.md (make fe-shot) when it is there.
 set -e
 out=$1 alphas=$2 rho=$3 mass_rhos=$4
 here=$(dirname "$0")
@@ -145,13 +144,15 @@ echo "largest difference of the mean profiles $(pair "linear-2.5-area-$rho" "$ma
 echo
 echo "### The FE shot (Figs. 7.9(a,b), 7.10)"
 echo
-if [ -s "$out/fe-2.5.row" ] && [ -s "$out/fe-2.5.mean" ]; then
-	printf '%s\n' "$(row fe-2.5)" | awk -F'\t' '{ printf "The FE shot at alpha 2.5: peak force %s N/mm at %s us, duration %s us, residual peak %.0f MPa at %s mm, surface %+.0f MPa; ", $7, $8, $11, $19, $20, $17 }'
-	echo "its profile against the FE/DE Hertz law: largest difference $(pair fe-2.5 "$main"); against the linear law $(pair fe-2.5 "linear-2.5-area-$rho")."
+if [ -s "$here/FE-SHOT.md" ]; then
+	echo "From FE-SHOT.md (\`make fe-shot\`: fe-shot.sh, fe-shot-report.sh), where both the DE disk and"
+	echo "the FE shot are read at the pass's end, not averaged over instants:"
+	echo
+	sed -n '/^| run /,/^$/p' "$here/FE-SHOT.md"
+	grep '^Every FE shot\|^\*\*Not every FE shot' "$here/FE-SHOT.md" || true
 else
-	echo "Not run yet (FE_ALPHAS in the Makefile, fe.sh): the disk as elastic finite elements,"
-	echo "E_s = 100 E, with node-to-segment penalty contact.  Its rows, when they are there, go in"
-	echo "the tables above and this section compares it with the FE/DE laws."
+	echo "Not run (\`make fe-shot\`): the disk as elastic finite elements, E_s = 100 E, with"
+	echo "node-to-segment penalty contact, against the rigid DE disk."
 fi
 echo
 

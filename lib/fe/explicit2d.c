@@ -102,6 +102,16 @@ static inline void gather(const dem_fe2_t *fe, const double *xs, size_t el, doub
 	}
 }
 
+/* ", i, j = I, J" of element el on a structured mesh (mesh2.h), "" on
+ * one without grid indices (nx = 0: the disk of dem_mesh2_disk) */
+static const char *elem_ij(const dem_mesh2_t *m, size_t el, char buf[48])
+{
+	buf[0] = 0;
+	if (m->nx > 0)
+		snprintf(buf, 48, " (i, j = %d, %d)", (int)(el % (size_t)m->nx), (int)(el / (size_t)m->nx));
+	return buf;
+}
+
 /* the least stable step of the elements at the coordinates xs; 0 and
  * *bad = 1 + the first bad element when one is degenerate */
 static double dt_min(const dem_fe2_t *fe, const double *xs, size_t *bad)
@@ -139,7 +149,7 @@ int dem_fe2_create(dem_fe2_t **out, const dem_mesh2_t *mesh, const dem_mat_t *ma
 		return dem_error_set(e, DEM_EINPUT, "explicit 2D: hourglass coefficients must be >= 0");
 	if (!(mat->rho > 0))
 		return dem_error_set(e, DEM_EINPUT, "explicit 2D: the material needs a density");
-	if (mesh->ne == 0 || mesh->nx < 1 || mesh->ny < 1)
+	if (mesh->ne == 0 || mesh->nx < 0 || mesh->ny < 0)
 		return dem_error_set(e, DEM_EINPUT, "explicit 2D: empty mesh");
 	if (o->mode == DEM_QUAD4_AXISYM)
 		for (size_t n = 0; n < mesh->nn; n++)
@@ -197,9 +207,9 @@ int dem_fe2_create(dem_fe2_t **out, const dem_mesh2_t *mesh, const dem_mat_t *ma
 		double xe[8], me[4];
 		gather(fe, mesh->X, el, xe);
 		if (dem_quad4_lumped_mass(xe, o->mode, o->thick, mat->rho, me)) {
-			dem_error_set(e, DEM_EINPUT, "explicit 2D: element %zu (i, j = %d, %d) of the mesh "
-				      "is inverted or degenerate", el, (int)(el % (size_t)mesh->nx),
-				      (int)(el / (size_t)mesh->nx));
+			char ij[48];
+			dem_error_set(e, DEM_EINPUT, "explicit 2D: element %zu%s of the mesh is inverted "
+				      "or degenerate", el, elem_ij(mesh, el, ij));
 			dem_fe2_free(fe);
 			return DEM_EINPUT;
 		}
@@ -210,9 +220,9 @@ int dem_fe2_create(dem_fe2_t **out, const dem_mesh2_t *mesh, const dem_mat_t *ma
 	fe->dt_stable = o->dt_factor * dt_min(fe, mesh->X, &bad);
 	if (bad) {
 		size_t el = bad - 1;
-		dem_error_set(e, DEM_EINPUT, "explicit 2D: element %zu (i, j = %d, %d) of the mesh is "
-			      "inverted or degenerate", el, (int)(el % (size_t)mesh->nx),
-			      (int)(el / (size_t)mesh->nx));
+		char ij[48];
+		dem_error_set(e, DEM_EINPUT, "explicit 2D: element %zu%s of the mesh is inverted or "
+			      "degenerate", el, elem_ij(mesh, el, ij));
 		dem_fe2_free(fe);
 		return DEM_EINPUT;
 	}
@@ -578,9 +588,9 @@ int dem_fe2_step(dem_fe2_t *fe, double dt, dem_error_t *e)
 	if (es.bad) {
 		size_t el = es.bad - 1;
 		fe->failed = 1;
-		dem_error_set(&fe->fail, DEM_ENUMERIC, "element %zu (i, j = %d, %d) inverted or degenerate "
-			      "at t = %.9g s (step %ld)", el, (int)(el % (size_t)fe->mesh->nx),
-			      (int)(el / (size_t)fe->mesh->nx), fe->t, fe->steps);
+		char ij[48];
+		dem_error_set(&fe->fail, DEM_ENUMERIC, "element %zu%s inverted or degenerate at t = "
+			      "%.9g s (step %ld)", el, elem_ij(fe->mesh, el, ij), fe->t, fe->steps);
 		return dem_error_set(e, DEM_ENUMERIC, "%s", fe->fail.msg);
 	}
 	if (fe->o.large)

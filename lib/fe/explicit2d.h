@@ -112,7 +112,9 @@ double dem_fe2_damping_alpha(const dem_mat_t *m, double xi, double H);
 typedef struct dem_fe2 dem_fe2_t;
 
 /* Build the model of a mesh (constraints from mesh->fix, plus u_r = 0 on
- * the axis for AXISYM) and a material (needs rho > 0).  Both are borrowed:
+ * the axis for AXISYM) and a material (needs rho > 0).  The mesh may be
+ * one without grid lines (nx = 0: mesh2.h's disk, the FE shot of
+ * shot/feshot2d.h); its elements are then named by number alone.  Both are borrowed:
  * they must outlive the model and not change.  Starts at t = 0 at rest,
  * stress-free.  DEM_EINPUT for a bad option, a degenerate element or (for
  * AXISYM) a node at r < 0; DEM_EIO when out of memory. */

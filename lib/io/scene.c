@@ -55,12 +55,14 @@ static int in_list(const char *const *list, const char *name)
 
 /* Keys of a section that two programs of one pipeline read, each its own
  * part: the shot section gives dempack the stream (radius ... azimuth) and
- * demshot the bodies (density, gap, buffer).  The check of one program
+ * demshot the bodies (density, gap, buffer; model, modulus_ratio and
+ * element, the FE shot of a 2D block).  The check of one program
  * lets the other's keys pass; that program checks their values. */
 static const char *const shared_keys[] = {
 	"shot.radius", "shot.law", "shot.lambda", "shot.speed", "shot.speed_scatter",
 	"shot.angle", "shot.azimuth",              /* dempack shots */
 	"shot.density", "shot.gap", "shot.buffer",  /* demshot */
+	"shot.model", "shot.modulus_ratio", "shot.element",  /* demshot, 2D */
 	NULL
 };
 

@@ -1,8 +1,27 @@
-/* mesh2.c - structured quadrilateral meshes of a rectangle (see mesh2.h). */
+/* mesh2.c - quadrilateral meshes of a rectangle and of a disk (see
+ * mesh2.h). */
 #include "mesh/mesh2.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "core/consts.h"
+
+/* The node and element arrays of nn nodes and ne elements (fix zero);
+ * on failure the mesh freed. */
+static int mesh2_alloc(dem_mesh2_t *m, size_t nn, size_t ne, const char *what, dem_error_t *e)
+{
+	m->nn = nn, m->ne = ne;
+	m->X = malloc(2 * nn * sizeof *m->X);
+	m->quad = malloc(4 * ne * sizeof *m->quad);
+	m->fix = calloc(nn, sizeof *m->fix);
+	if (!m->X || !m->quad || !m->fix) {
+		dem_mesh2_free(m);
+		return dem_error_nomem(e, what);
+	}
+	return DEM_OK;
+}
 
 int dem_mesh2_rect(dem_mesh2_t *m, const dem_axis_t ax[2], dem_error_t *e)
 {
@@ -20,14 +39,8 @@ int dem_mesh2_rect(dem_mesh2_t *m, const dem_axis_t ax[2], dem_error_t *e)
 		return dem_error_set(e, DEM_EINPUT, "mesh: %zu nodes are more than a mesh can number (%u)",
 				     nn, UINT32_MAX);
 	}
-	m->nn = nn, m->ne = ne;
-	m->X = malloc(2 * nn * sizeof *m->X);
-	m->quad = malloc(4 * ne * sizeof *m->quad);
-	m->fix = calloc(nn, sizeof *m->fix);
-	if (!m->X || !m->quad || !m->fix) {
-		dem_mesh2_free(m);
-		return dem_error_nomem(e, "mesh");
-	}
+	if (mesh2_alloc(m, nn, ne, "mesh", e))
+		return e->code;
 	for (int j = 0; j <= m->ny; j++)
 		for (int i = 0; i <= m->nx; i++) {
 			size_t p = dem_mesh2_node(m, i, j);
@@ -140,4 +153,90 @@ void dem_mesh2_lift(const dem_mesh2_t *m2, const double *u2, const double *sig2,
 		if (ep2)
 			ep[el] = ep2[el];
 	}
+}
+
+/* ---- the disk (O-grid) --------------------------------------------------- */
+
+/* Node number of ring j (0: the core's boundary .. m: the rim), block k,
+ * position i = 0..n along the block (i = n is the next block's 0). */
+static size_t ring_node(int n, int m, int j, int k, int i)
+{
+	if (i == n)
+		k = (k + 1) % 4, i = 0;
+	return (size_t)(m - j) * 4 * (size_t)n + (size_t)k * (size_t)n + (size_t)i;
+}
+
+/* Node number of the core's grid point (p, q), 0..n each, from (-a, -a). */
+static size_t core_node(int n, int m, int p, int q)
+{
+	if (p == n)
+		return ring_node(n, m, 0, 0, q);
+	if (q == n)
+		return ring_node(n, m, 0, 1, n - p);
+	if (p == 0)
+		return ring_node(n, m, 0, 2, n - q);
+	if (q == 0)
+		return ring_node(n, m, 0, 3, p);
+	return 4 * (size_t)n * ((size_t)m + 1) + (size_t)(p - 1) + (size_t)(n - 1) * (size_t)(q - 1);
+}
+
+int dem_mesh2_disk(dem_mesh2_t *m, double R, double h, const double c[2], size_t *nrim,
+		   dem_error_t *e)
+{
+	memset(m, 0, sizeof *m);
+	if (!(R > 0) || !(h > 0) || !isfinite(R) || !isfinite(h))
+		return dem_error_set(e, DEM_EINPUT, "disk mesh: radius and element size must be > 0 "
+				     "(got %g m, %g m)", R, h);
+	const double a = 0.5 * R;
+	double fn = ceil(DEM_PI * R / (2 * h));
+	if (!(fn * fn * 4 < 1e7))
+		return dem_error_set(e, DEM_EINPUT, "disk mesh: an element of %g m in a disk of "
+				     "radius %g m makes too many elements", h, R);
+	int n = (int)fn, nm = (int)fmax(1, round((R - a) / h));
+	size_t nn = 4 * (size_t)n * ((size_t)nm + 1) + (size_t)(n - 1) * (size_t)(n - 1);
+	size_t ne = 4 * (size_t)n * (size_t)nm + (size_t)n * (size_t)n;
+	if (mesh2_alloc(m, nn, ne, "disk mesh", e))
+		return e->code;
+	/* the blocks: block k is block 0 turned by k quarter turns */
+	static const double rot[4][4] = { { 1, 0, 0, 1 }, { 0, -1, 1, 0 }, { -1, 0, 0, -1 },
+					  { 0, 1, -1, 0 } };
+	for (int j = 0; j <= nm; j++)
+		for (int k = 0; k < 4; k++)
+			for (int i = 0; i < n; i++) {
+				double th = -DEM_PI / 4 + DEM_PI / 2 * i / n, s = (double)j / nm;
+				double p[2] = { a + s * (R * cos(th) - a),
+						-a + 2 * a * i / n + s * (R * sin(th) + a - 2 * a * i / n) };
+				if (j == nm)  /* on the circle to rounding */
+					p[0] = R * cos(th), p[1] = R * sin(th);
+				const double *r = rot[k];
+				double *X = m->X + 2 * ring_node(n, nm, j, k, i);
+				X[0] = c[0] + r[0] * p[0] + r[1] * p[1];
+				X[1] = c[1] + r[2] * p[0] + r[3] * p[1];
+			}
+	for (int q = 1; q < n; q++)
+		for (int p = 1; p < n; p++) {
+			double *X = m->X + 2 * core_node(n, nm, p, q);
+			X[0] = c[0] - a + 2 * a * p / n;
+			X[1] = c[1] - a + 2 * a * q / n;
+		}
+	uint32_t *qd = m->quad;
+	for (int j = 0; j < nm; j++)
+		for (int k = 0; k < 4; k++)
+			for (int i = 0; i < n; i++, qd += 4) {
+				/* counter-clockwise: out along the ray, then on round */
+				qd[0] = (uint32_t)ring_node(n, nm, j, k, i);
+				qd[1] = (uint32_t)ring_node(n, nm, j + 1, k, i);
+				qd[2] = (uint32_t)ring_node(n, nm, j + 1, k, i + 1);
+				qd[3] = (uint32_t)ring_node(n, nm, j, k, i + 1);
+			}
+	for (int q = 0; q < n; q++)
+		for (int p = 0; p < n; p++, qd += 4) {
+			qd[0] = (uint32_t)core_node(n, nm, p, q);
+			qd[1] = (uint32_t)core_node(n, nm, p + 1, q);
+			qd[2] = (uint32_t)core_node(n, nm, p + 1, q + 1);
+			qd[3] = (uint32_t)core_node(n, nm, p, q + 1);
+		}
+	if (nrim)
+		*nrim = 4 * (size_t)n;
+	return DEM_OK;
 }

@@ -1,6 +1,7 @@
-/* mesh2.h - structured quadrilateral meshes of a rectangle, for the 2D
- * explicit block (fe/explicit2d.h: plane strain, Ch. 7.4; axisymmetric,
- * Ch. 7.5.1).
+/* mesh2.h - quadrilateral meshes for the 2D explicit engine
+ * (fe/explicit2d.h): the structured mesh of a rectangle, the block (plane
+ * strain, Ch. 7.4; axisymmetric, Ch. 7.5.1), and the O-grid of a disk, the
+ * finite element shot of Ch. 7.4 (dem_mesh2_disk, at the end).
  *
  * The 2D twin of mesh.h: each axis is meshed by dem_axis_grid (mesh.h: a
  * fine region of uniform elements, geometric grading outside it, capped at
@@ -29,8 +30,9 @@
 #include "mesh/mesh.h"
 
 typedef struct dem_mesh2 {
-	int nx, ny;              /* elements along each axis */
-	double *gx, *gy;         /* grid lines (nx+1, ny+1 values) */
+	int nx, ny;              /* elements along each axis; 0 for a mesh
+				  * without grid lines (dem_mesh2_disk) */
+	double *gx, *gy;         /* grid lines (nx+1, ny+1 values); NULL without */
 	size_t nn, ne;           /* nodes, elements */
 	double *X;               /* reference coordinates, 2 per node (x, y) */
 	uint32_t *quad;          /* 4 node numbers per element */
@@ -83,5 +85,28 @@ int dem_mesh2_extrude(const dem_mesh2_t *m2, double w, dem_mesh_t *m, dem_error_
 void dem_mesh2_lift(const dem_mesh2_t *m2, const double *u2, const double *sig2,
 		    const double *eps2, const double *ep2, double *u, double *sig,
 		    double *eps, double *ep);
+
+/* The O-grid of a disk of radius R centred at c (2 values): a square core
+ * of half side a = R/2, n x n elements, and four mapped blocks between its
+ * sides and the circle, n elements along the arc and m across, each node
+ * of a block on the straight line from a point of the square's side
+ * (evenly spaced) to a point of the circle (evenly spaced in angle), at
+ * j/m of the way.  n = ceil(pi R / (2 h)) so that the rim's segments are
+ * no longer than h; m = max(1, round((R - a) / h)).  The elements are
+ * then no longer than about h: the core's are 2 a / n = 0.64 h on a side,
+ * and the blocks' radial edges (R - a sqrt 2) / m = 0.59 h at the square's
+ * corners, the shortest ones (the stable step's measure, quad4.h).
+ * 4 n m + n^2 elements, 4 n (m + 1) + (n - 1)^2 nodes.
+ *
+ * Numbering.  Nodes 0 .. 4n-1 are the rim, counter-clockwise from the
+ * angle -45 degrees, on the circle to rounding (returned in *nrim); the
+ * other rings of the blocks follow inwards, then the core's inner nodes.
+ * Elements counter-clockwise (quad4.h).  The rim's segments with the
+ * outside on their left (as contact/disk.h and dem_mesh2_top_segments
+ * have it) are (k+1, k), clockwise.  No grid lines (nx = ny = 0, gx = gy =
+ * NULL), no constraints.  DEM_EINPUT for R or h not > 0 or more than
+ * 10^7 elements (R / h too large), DEM_EIO when out of memory. */
+int dem_mesh2_disk(dem_mesh2_t *m, double R, double h, const double c[2], size_t *nrim,
+		   dem_error_t *e);
 
 #endif

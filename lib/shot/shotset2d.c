@@ -42,6 +42,7 @@ struct dem_shotset2d {
 	double dt_prev;
 	int prepared;
 	dem_shotset_stats_t st;
+	dem_feshot2d_t *F;        /* FE shots, or NULL */
 };
 
 /* ---- set-up ------------------------------------------------------------- */
@@ -74,7 +75,12 @@ int dem_shotset2d_create(dem_shotset2d_t **Sp, const dem_mesh2_t *mesh, const do
 	S->node_mass = node_mass;
 	S->cm = *cm;
 	S->o = *o;
+	S->o.fe = NULL;
 	S->axisym = axi;
+	if (o->fe && dem_feshot2d_create(&S->F, mesh, node_mass, cm, o->fe, e)) {
+		dem_shotset2d_free(S);
+		return e->code;
+	}
 	S->nseg = dem_mesh2_top_segments(mesh, -HUGE_VAL, HUGE_VAL, NULL);
 	S->seg = malloc(2 * S->nseg * sizeof *S->seg);
 	S->smass = malloc(S->nseg * sizeof *S->smass);
@@ -102,6 +108,7 @@ void dem_shotset2d_free(dem_shotset2d_t *S)
 		return;
 	free(S->seg), free(S->smass), free(S->Knode);
 	free(S->b), free(S->po), free(S->cs), free(S->ss), free(S->T);
+	dem_feshot2d_free(S->F);
 	free(S);
 }
 
@@ -125,6 +132,9 @@ int dem_shotset2d_begin(dem_shotset2d_t *S, size_t n, const dem_shot_t *sh, cons
 	if (S->axisym && n > 1)
 		return dem_error_set(e, DEM_EINPUT, "pass %lu: %zu shots; an axisymmetric block "
 				     "takes one shot per pass (on the axis)", sh[0].pass, n);
+	if (S->F && n > 1)
+		return dem_error_set(e, DEM_EINPUT, "pass %lu: %zu shots; FE shots come one per "
+				     "pass", sh[0].pass, n);
 	if (n > S->scap) {
 		dem_shot_body_t *b = realloc(S->b, n * sizeof *b);
 		if (b)
@@ -211,6 +221,15 @@ int dem_shotset2d_begin(dem_shotset2d_t *S, size_t n, const dem_shot_t *sh, cons
 		}
 		b->x[0] = c[0], b->x[1] = c[1];
 		b->v[0] = vx, b->v[1] = vy;
+		if (S->F) {
+			/* the FE disk where the rigid one would be */
+			double v2[2] = { vx, vy };
+			if (dem_feshot2d_begin(S->F, r->r, c, v2, e))
+				return e->code;
+			unsigned long pass = b->pass;
+			dem_feshot2d_body(S->F, b);
+			b->pass = pass;
+		}
 		S->ns++;
 	}
 	top_box(S, x);
@@ -377,6 +396,11 @@ int dem_shotset2d_prepare(dem_shotset2d_t *S, const double *x, const double *v, 
 	S->prepared = 0;
 	if (S->ns == 0)
 		return DEM_OK;
+	if (S->F) {
+		top_box(S, x);
+		*dt = fmin(dt_max, dem_feshot2d_dt(S->F));
+		return DEM_OK;
+	}
 	*dt = fmin(dt_max, geometry(S, x, v, dt_max));
 	S->prepared = 1;
 	return DEM_OK;
@@ -441,6 +465,23 @@ int dem_shotset2d_hook(void *ctx, double t, double dt, const double *x, const do
 	(void)t, (void)e;
 	if (S->ns == 0)
 		return DEM_OK;
+	if (S->F) {
+		double c0, m0, c1, m1;
+		dem_feshot2d_times(S->F, &c0, &m0);
+		int rc = dem_feshot2d_hook(S->F, t, dt, x, v, f, e);
+		if (rc)
+			return rc;
+		dem_feshot2d_times(S->F, &c1, &m1);
+		unsigned long pass = S->b[0].pass;
+		dem_feshot2d_body(S->F, &S->b[0]);
+		S->b[0].pass = pass;
+		S->st.steps++;
+		S->st.candidates += (double)(S->nseg + dem_feshot2d_mesh(S->F)->nn);
+		S->st.contacts += S->b[0].contacts;
+		S->st.contact_s += c1 - c0;
+		S->st.integrate_s += m1 - m0;
+		return DEM_OK;
+	}
 	if (!S->prepared)
 		geometry(S, x, v, dt);
 	S->prepared = 0;
@@ -564,6 +605,8 @@ const dem_shot_body_t *dem_shotset2d_body(const dem_shotset2d_t *S, size_t i)
 
 double dem_shotset2d_kinetic(const dem_shotset2d_t *S)
 {
+	if (S->F)
+		return S->ns ? dem_feshot2d_kinetic(S->F) : 0;
 	double k = 0;
 	for (size_t s = 0; s < S->ns; s++) {
 		const dem_shot_body_t *b = &S->b[s];
@@ -571,6 +614,11 @@ double dem_shotset2d_kinetic(const dem_shotset2d_t *S)
 		k += 0.25 * b->M * b->R * b->R * b->w[2] * b->w[2];
 	}
 	return k;
+}
+
+const dem_feshot2d_t *dem_shotset2d_feshot(const dem_shotset2d_t *S)
+{
+	return S->F;
 }
 
 size_t dem_shotset2d_segments(const dem_shotset2d_t *S)

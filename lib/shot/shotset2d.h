@@ -57,6 +57,14 @@
  * A pass is over (dem_shotset2d_done) when no shot touches the block and
  * every shot moves up or on a straight path that misses the box of the
  * top edge.
+ *
+ * FE shots (opts.fe, PLANE only).  Each shot is instead a finite element
+ * disk in penalty contact with the block (feshot2d.h: Ch. 7.4's FE
+ * analysis), placed as a rigid one is; one shot per pass.  Its body
+ * (dem_shotset2d_body) is the summary of feshot2d.h (centre of mass, mean
+ * velocity, resultant contact force), the step the shot model's and the
+ * penalty's (lambda is not used), and the pass ends as above on that
+ * summary.
  */
 #ifndef DEM_SHOT_SHOTSET2D_H
 #define DEM_SHOT_SHOTSET2D_H
@@ -68,6 +76,7 @@
 #include "fe/quad4.h"
 #include "mesh/mesh2.h"
 #include "pack/shots.h"
+#include "shot/feshot2d.h"
 #include "shot/shotset.h"
 
 typedef struct dem_shotset2d_opts {
@@ -77,6 +86,8 @@ typedef struct dem_shotset2d_opts {
 	double lambda;   /* Box 3.1 factor in (0, 1] */
 	double gap;      /* a new shot's lowest point starts this far above the
 			  * highest top node under it, m, >= 0 */
+	const dem_feshot2d_opts_t *fe;  /* NULL: rigid shots; else FE shots
+					 * (above; copied) */
 } dem_shotset2d_opts_t;
 
 typedef struct dem_shotset2d dem_shotset2d_t;
@@ -85,7 +96,8 @@ typedef struct dem_shotset2d dem_shotset2d_t;
  * they must outlive the set; the masses of the slab or the ring, as
  * dem_fe2_mass gives them), a contact model (copied: PLANE a law at dim
  * 2, AXISYM a 3D one).  DEM_EINPUT for a bad option or a law of the wrong
- * dimension, DEM_EIO without memory. */
+ * dimension (or, for FE shots, what dem_feshot2d_create refuses), DEM_EIO
+ * without memory. */
 int dem_shotset2d_create(dem_shotset2d_t **S, const dem_mesh2_t *mesh, const double *node_mass,
 			 const dem_contact_model_t *cm, const dem_shotset2d_opts_t *o,
 			 dem_error_t *e);
@@ -97,7 +109,8 @@ void dem_shotset2d_free(dem_shotset2d_t *S);
  * x (x: the block's current coordinates, 2 per node), further back by
  * |v| t for a start time t, and back along its line until it no more
  * overlaps a shot placed before it.  DEM_EINPUT for a bad radius, no
- * downward speed, or (AXISYM) a shot off the axis or a second shot. */
+ * downward speed, or (AXISYM, FE shots) a shot off the axis or a second
+ * shot. */
 int dem_shotset2d_begin(dem_shotset2d_t *S, size_t n, const dem_shot_t *shots, const double *x,
 			dem_error_t *e);
 
@@ -116,8 +129,11 @@ size_t dem_shotset2d_count(const dem_shotset2d_t *S);
 const dem_shot_body_t *dem_shotset2d_body(const dem_shotset2d_t *S, size_t i);
 
 /* Kinetic energy of the shots (translation and, PLANE, spin of a solid
- * disk), J (of the slab in PLANE). */
+ * disk; an FE shot's, dem_feshot2d_kinetic), J (of the slab in PLANE). */
 double dem_shotset2d_kinetic(const dem_shotset2d_t *S);
+
+/* The FE shots' side (feshot2d.h), NULL for rigid shots. */
+const dem_feshot2d_t *dem_shotset2d_feshot(const dem_shotset2d_t *S);
 
 /* Segments of the top edge. */
 size_t dem_shotset2d_segments(const dem_shotset2d_t *S);
