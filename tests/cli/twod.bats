@@ -199,3 +199,18 @@ same_run() {
 	fi
 	same_run a b
 }
+
+@test "twod: demshot | demprofile | demform on a plane-strain block forms a plane-strain strip (kappa_y 0)" {
+	cat > "$T/strip.yaml" <<-EOF
+	material: {E: 210 GPa, nu: 0.3}
+	plate: {size: [40 mm, 4 mm, 2 mm], element: 2 mm, layers: 12}
+	EOF
+	run --separate-stderr bash -c "demshot -s '$T/plane.yaml' -q '$T/shot.txt' | demprofile | demform -s '$T/strip.yaml'"
+	echo "$output"; echo "$stderr"
+	[ "$status" -eq 0 ]
+	grep -q 'plane strain along y (the profile is of a 2D plane-strain block)' <<< "$stderr"
+	echo "$output" > "$T/sum"
+	[ "$(value plane_strain "$T/sum")" = true ]
+	awk -v x="$(value curvature_x "$T/sum")" -v y="$(value curvature_y "$T/sum")" \
+		'BEGIN { exit !(x != 0 && y < 1e-9 * (x > 0 ? x : -x) && y > -1e-9 * (x > 0 ? x : -x)) }'
+}
