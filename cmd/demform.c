@@ -117,6 +117,7 @@ struct settings {
 	double gauge[2];        /* the gauge's ball rectangle, lx x ly */
 	int gauge_fits;         /* on the plate: a reading per step */
 	long pass;
+	int plane;              /* form.plane_strain: 0 auto, 1 false, 2 true */
 	int nstep;
 	struct step step[MAXSTEP];
 };
@@ -157,6 +158,7 @@ static int read_scene(dem_scene_t *s, int accuracy, struct settings *st, dem_err
 	static const char *const elems[] = {"full", "bbar", "eas", NULL};
 	static const char *const inits[] = {"stress", "strain", NULL};
 	static const char *const axes[] = {"x", "y", NULL};
+	static const char *const planes[] = {"auto", "false", "true", NULL};
 	static const char *const bcs[] = {"free", "fixed", "normal", NULL};
 	static const char *const faces[] = {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"};
 	static const double size0[3] = {0.150, 0.050, 0.004}, fit0[2] = {1, 1};
@@ -192,7 +194,8 @@ static int read_scene(dem_scene_t *s, int accuracy, struct settings *st, dem_err
 	    dem_scene_choice(s, "form.chord_axis", axes, 0, &st->chord_axis, e) ||
 	    dem_scene_vector(s, "form.fit", DEM_DIM_NONE, 2, fit0, DEM_SCENE_GT0, 1, st->fit, e) ||
 	    dem_scene_vector(s, "form.gauge", DEM_DIM_LENGTH, 2, gauge0, DEM_SCENE_GT0, HUGE_VAL, st->gauge, e) ||
-	    dem_scene_int(s, "form.pass", -1, -1, 1000000, &st->pass, e))
+	    dem_scene_int(s, "form.pass", -1, -1, 1000000, &st->pass, e) ||
+	    dem_scene_choice(s, "form.plane_strain", planes, 0, &st->plane, e))
 		return e->code;
 	o->large = large;
 	o->rule = (dem_hex8_rule_t)rule;
@@ -446,27 +449,45 @@ static int form_step(const struct cmdline *cl, struct job *j, int k, FILE *sum,
 	double t = dem_wall();
 	int rc;
 
+	int nplane = 0;
 	for (int a = 0; a < sp->napp; a++) {
 		dem_profile_t own = {0};
 		const dem_profile_t *p = NULL;
 		rc = get_profile(&j->ip, cl->input, &sp->app[a], &own, &p, e);
-		if (!rc)
+		if (!rc) {
+			nplane += p->plane;
 			rc = dem_form_profile(j->form, p, &sp->app[a].r,
 					      set->init ? DEM_FORM_STRAIN : DEM_FORM_SIGMA,
 					      sp->app[a].scale, e);
+		}
 		dem_profile_free(&own);
 		if (rc)
 			return rc;
 	}
 	dem_cost_time(cost, "profile", dem_wall() - t);
+	/* form.plane_strain auto: a 2D plane-strain block's profiles form a
+	 * plane-strain strip (demform(1)); mixed with others, the scene
+	 * must say */
+	if (set->plane == 0 && nplane > 0 && nplane < sp->napp)
+		return dem_error_set(e, DEM_EINPUT, "step %d: profiles of a 2D plane-strain block "
+				     "and of a 3D one: set form.plane_strain (true or false)", k + 1);
+	int plane = set->plane == 2 || (set->plane == 0 && sp->napp > 0 && nplane == sp->napp);
 	dem_form_constrain(j->form, sp->bc, sp->minimal);
+	if (plane) {
+		dem_form_plane_strain(j->form);
+		if (!cl->com.quiet)
+			fprintf(stderr, "%s: step %d: plane strain along y%s: u_y held at every "
+				"node, the profile's syy the constraint's\n", PROG, k + 1,
+				set->plane == 2 ? "" : " (the profile is of a 2D plane-strain block)");
+	}
 	if ((rc = dem_form_step(j->form, &set->opts, &j->st, e)))
 		return rc;
 	dem_form_shape_t sh;
 	if ((rc = dem_form_shape(j->form, set->chord, set->chord_axis, set->fit[0], set->fit[1],
 				 &sh, e)))
 		return rc;
-	fprintf(sum, "step: %d\narc_height: %.9g\nchord: %.9g\n", k + 1, sh.arc, set->chord);
+	fprintf(sum, "step: %d\nplane_strain: %s\narc_height: %.9g\nchord: %.9g\n", k + 1,
+		plane ? "true" : "false", sh.arc, set->chord);
 	if (set->gauge_fits) {
 		double gh;
 		if ((rc = dem_form_gauge(j->form, set->gauge[0], set->gauge[1], &gh, e)))

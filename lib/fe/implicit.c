@@ -224,6 +224,13 @@ void dem_form_constrain(dem_form_t *f, const dem_bc_t bc[6], int minimal)
 	f->pattern_ok = 0;
 }
 
+void dem_form_plane_strain(dem_form_t *f)
+{
+	for (size_t n = 0; n < f->nn; n++)
+		f->fix[n] |= DEM_FIX_Y;
+	f->pattern_ok = 0;
+}
+
 /* Equation numbers, the CSC pattern of the upper triangle (rows sorted)
  * from the 27-node neighbourhoods of the structured mesh, and CHOLMOD's
  * analysis (fill-reducing ordering, supernodes). */

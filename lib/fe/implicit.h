@@ -112,6 +112,15 @@ int dem_form_profile(dem_form_t *f, const dem_profile_t *p, const dem_form_regio
  * edge: y z; the centre of the +y edge: z), which leaves a free plate free. */
 void dem_form_constrain(dem_form_t *f, const dem_bc_t bc[6], int minimal);
 
+/* Plane strain along y for the next step (call after dem_form_constrain):
+ * u_y held at zero at every node, so eps_yy = 0 and the plate bends about
+ * y only, as the plane-strain strip of a 2D block does.  The profile's
+ * syy is then the stress of that constraint, carried by its reactions:
+ * it bends nothing.  With uniform profiles the curvature is
+ * kappa_x = -12 int sxx z dz / (E' h^3), E' = E / (1 - nu^2) (z from the
+ * mid-plane). */
+void dem_form_plane_strain(dem_form_t *f);
+
 /* Threads of the static stage: n > 0 sets the OpenMP threads of the
  * assembly and, when the BLAS under CHOLMOD is OpenBLAS (found at run time
  * by its openblas_set_num_threads), its threads too; n <= 0 changes

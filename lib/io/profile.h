@@ -33,6 +33,10 @@ typedef struct dem_profile {
 	double *ep;       /* 1 per point */
 	double *sd;       /* 13 per point: sd of sig (6), eps (6), ep */
 	unsigned *count;  /* samples per point */
+	int plane;        /* 1: of a 2D plane-strain block (the stream's "# twod
+			   * mode=plane" line, which demprofile passes on from
+			   * demshot's state stream): syy is the stress of the
+			   * constraint eps_yy = 0, not a stress of its own */
 } dem_profile_t;
 
 /* Read the profile of the given pass (pass < 0: the last one in the

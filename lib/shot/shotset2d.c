@@ -550,6 +550,24 @@ int dem_shotset2d_hook(void *ctx, double t, double dt, const double *x, const do
 	return DEM_OK;
 }
 
+int dem_shotset2d_drive(dem_shotset2d_t *S, size_t i, const double x[2], const double v[2],
+			double w, dem_error_t *e)
+{
+	if (i >= S->ns)
+		return dem_error_set(e, DEM_EINPUT, "drive: shot %zu of a pass of %zu", i, S->ns);
+	if (!isfinite(x[0]) || !isfinite(x[1]) || !isfinite(v[0]) || !isfinite(v[1]) || !isfinite(w))
+		return dem_error_set(e, DEM_EINPUT, "drive: shot %zu: a motion that is not finite", i);
+	if (S->axisym && (x[0] != 0 || v[0] != 0 || w != 0))
+		return dem_error_set(e, DEM_EINPUT, "drive: shot %zu: an axisymmetric shot moves on "
+				     "the axis, without spin", i);
+	dem_shot_body_t *b = &S->b[i];
+	b->x[0] = x[0], b->x[1] = x[1];
+	b->v[0] = v[0], b->v[1] = v[1];
+	b->w[2] = w;
+	S->prepared = 0;
+	return DEM_OK;
+}
+
 /* ---- queries ------------------------------------------------------------ */
 
 /* Whether the straight path of shot b never meets the box lo..hi grown by

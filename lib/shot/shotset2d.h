@@ -123,6 +123,18 @@ int dem_shotset2d_prepare(dem_shotset2d_t *S, const double *x, const double *v, 
 int dem_shotset2d_hook(void *ctx, double t, double dt, const double *x, const double *v,
 		       double *f, dem_error_t *e);
 
+/* Drive shot i of the pass (a prescribed motion: a disk pressed to a
+ * fixed indentation and rolled or slid along the surface, as a test or a
+ * burnishing tool would): its centre x, velocity v (2D, the plane above)
+ * and spin w about z are set now, before dem_shotset2d_prepare.  The next
+ * step finds the contacts and the step limit on that motion and the
+ * forces with that velocity, then moves the shot on as a free one; drive
+ * it again before each step to hold it on its path.  DEM_EINPUT for i
+ * beyond the pass, a value not finite, or (AXISYM) a motion off the axis
+ * or a spin. */
+int dem_shotset2d_drive(dem_shotset2d_t *S, size_t i, const double x[2], const double v[2],
+			double w, dem_error_t *e);
+
 int dem_shotset2d_done(const dem_shotset2d_t *S);
 size_t dem_shotset2d_holding(const dem_shotset2d_t *S, size_t *touching, size_t *coming);
 size_t dem_shotset2d_count(const dem_shotset2d_t *S);

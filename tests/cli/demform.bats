@@ -241,3 +241,84 @@ closed_kappa() {
 	[[ $output == *"tolerance: "* ]]
 	[[ $output == *"increments: 1"* ]]
 }
+
+# ---- a 2D plane-strain profile (issue 18, item 3) ---------------------------
+# Reference: a strip in plane strain along y (eps_yy = 0, free in x and z)
+# under an initial stress sxx(z) has the curvature
+#   kappa_x = -12 int sxx z dz / (E' h^3),  E' = E / (1 - nu^2),
+# z from the mid-plane: the free plate of DESIGN.md with the plane-strain
+# modulus in place of the biaxial E / (1 - nu) (the moment balance
+# int (sxx + E' (e0 + kappa z)) z dz = 0); no curvature about x; and the
+# profile's syy, the constraint's stress, bends nothing.
+
+# the plane-strain closed form for SHAPE on a plate of thickness H (m)
+closed_kappa_plane() {
+	awk -v h="$2" -v E=72e9 -v nu=0.33 '
+	{ d[NR] = $1 * 1e-3; s[NR] = $2 * 1e6 }
+	END {
+		for (k = 1; k < NR; k++)
+			for (g = 0; g <= 2; g++) {
+				t = g / 2; x = d[k] + t * (d[k + 1] - d[k])
+				w = (d[k + 1] - d[k]) * (g == 1 ? 4 : 1) / 6
+				I1 += w * (s[k] + t * (s[k + 1] - s[k])) * (h / 2 - x)
+			}
+		printf "%.12g\n", -12 * (1 - nu * nu) * I1 / (E * h * h * h)
+	}' "$1"
+}
+
+@test "demform: a 2D plane-strain profile forms a plane-strain strip: kappa_x = -12 M / (E' h^3) within 0.5 %, no kappa_y, syy bends nothing" {
+	# the stream as demprofile passes it on from a 2D plane-strain state
+	# stream; syy = sxx here, a made-up constraint stress
+	sed '/^# format text/a # twod mode=plane thickness=0.001' "$T/prof" > "$T/prof2"
+	# and with syy = 0
+	awk '/^# data/ { f = 1 } f && !/^#/ { $4 = 0 } { print }' "$T/prof2" > "$T/prof2z"
+	# a strip 2 elements wide (3 node rows: the fit sees kappa_y)
+	cat > "$T/strip.yaml" <<-EOF
+	material: {E: 72 GPa, nu: 0.33}
+	plate: {size: [60 mm, 4 mm, 4 mm], element: 2 mm, layers: 15}
+	EOF
+	run --separate-stderr demform -s "$T/strip.yaml" "$T/prof2"
+	echo "$output"; echo "$stderr"
+	[ "$status" -eq 0 ]
+	grep -q '^demform: step 1: plane strain along y (the profile is of a 2D plane-strain block)' <<< "$stderr"
+	echo "$output" > "$T/a"
+	[ "$(value plane_strain "$T/a")" = true ]
+	k=$(closed_kappa_plane "$T/shape" 0.004)
+	kx=$(value curvature_x "$T/a")
+	echo "kappa_x $kx, closed form $k"
+	rel_close "$kx" "$k" 0.005
+	awk -v y="$(value curvature_y "$T/a")" -v x="$kx" 'BEGIN { exit !(y < 1e-9 * x && y > -1e-9 * x) }'
+	demform -s "$T/strip.yaml" -q "$T/prof2z" > "$T/z"
+	rel_close "$(value curvature_x "$T/z")" "$kx" 1e-9
+	# a 3D profile with form.plane_strain: true: the same strip
+	cat "$T/strip.yaml" - > "$T/on.yaml" <<-EOF
+	form: {plane_strain: true}
+	EOF
+	demform -s "$T/on.yaml" -q "$T/prof" > "$T/on"
+	[ "$(value curvature_x "$T/on")" = "$kx" ]
+	# form.plane_strain: false: the profile applied as it stands, syy an
+	# initial stress too (a free plate bent both ways)
+	cat "$T/strip.yaml" - > "$T/off.yaml" <<-EOF
+	form: {plane_strain: false}
+	EOF
+	demform -s "$T/off.yaml" -q "$T/prof2" > "$T/off"
+	[ "$(value plane_strain "$T/off")" = false ]
+	awk -v a="$(value curvature_x "$T/off")" -v b="$kx" 'BEGIN { r = a / b - 1; exit !(r > 0.1 || r < -0.1) }'
+	awk -v y="$(value curvature_y "$T/off")" 'BEGIN { exit !(y > 0.1) }'
+}
+
+@test "demform: a step mixing a 2D plane-strain profile with a 3D one needs form.plane_strain" {
+	sed '/^# format text/a # twod mode=plane thickness=0.001' "$T/prof" > "$T/prof2"
+	cat "$T/small.yaml" - > "$T/mix.yaml" <<-EOF
+	form:
+	  step1: {top: {}, bottom: {file: "$T/prof"}}
+	EOF
+	run --separate-stderr demform -s "$T/mix.yaml" -o "$T/mix" "$T/prof2"
+	echo "$stderr"
+	[ "$status" -eq 1 ]
+	grep -q 'step 1: profiles of a 2D plane-strain block and of a 3D one: set form.plane_strain' <<< "$stderr"
+	[ ! -e "$T/mix" ]
+	sed 's/^form:$/form:\n  plane_strain: false/' "$T/mix.yaml" > "$T/mix2.yaml"
+	run --separate-stderr demform -s "$T/mix2.yaml" -o "$T/mix" "$T/prof2"
+	[ "$status" -eq 0 ]
+}

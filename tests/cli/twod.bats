@@ -189,3 +189,121 @@ force_sums() {
 	done
 	awk 'NR == FNR { d05 = $1 - $2; next } { exit !(d05 > $1 - $2) }' "$T/d0.5" "$T/d5"
 }
+
+# ---- checkpoints (issue 18, item 2) ----------------------------------------
+# Reference: the uninterrupted run.  A 2D run stopped after a pass's
+# checkpoint (DEMSHOT_STOP_AFTER: SIGKILL from inside; or SIGTERM from
+# outside while a later pass runs) and resumed must write the same state
+# stream, decoded, byte for byte apart from its provenance line (the
+# arguments differ), and the same force history.
+
+# three passes of the plane block: two disks a pass (disk/disk contact,
+# oblique), Coulomb friction and contact damping, so that the checkpoint
+# must carry the shots' and the block's whole state
+twod_passes() {
+	cp "$T/plane.yaml" "$T/fr.yaml"
+	printf 'contact:\n  friction: 0.3\n  damping: 0.1\n' >> "$T/fr.yaml"
+	sed '/^0 0 0 0/,$d' "$T/shot.txt" > "$T/s6.txt"
+	cat >> "$T/s6.txt" <<'TXT'
+0 0 0 0 0.0005 0 0 -10
+0 0 0.0004 0 0.0003 -2 0 -10
+1 0 0.0002 0 0.0005 0 0 -10
+1 1e-6 0.0002 0 0.0005 0 0 -10
+2 0 -0.0002 0 0.0005 3 0 -10
+2 0 0.0005 0 0.0004 -3 0 -8
+# end 6
+TXT
+	# the axisymmetric block: one sphere a pass on the axis
+	sed '/^0 0 0 0/,$d' "$T/shot.txt" > "$T/a3.txt"
+	cat >> "$T/a3.txt" <<'TXT'
+0 0 0 0 0.0005 0 0 -10
+1 0 0 0 0.0004 0 0 -12
+2 0 0 0 0.0005 0 0 -10
+# end 3
+TXT
+}
+
+# same_run A B: the decoded state streams A.state and B.state are equal
+# but for their '# prog' line, and so are the force histories A.txt, B.txt
+same_run() {
+	cmp <(gzip -dc "$T/$1.state" | grep -av '^# prog') <(gzip -dc "$T/$2.state" | grep -av '^# prog')
+	cmp <(grep -v '^# prog' "$T/$1.txt") <(grep -v '^# prog' "$T/$2.txt")
+}
+
+@test "twod: a 2D run killed after pass 2 and resumed writes the uninterrupted run's streams bit for bit" {
+	twod_passes
+	for c in "fr.yaml s6.txt" "axisym.yaml a3.txt"; do
+		set -- $c
+		rm -f "$T"/ck* "$T"/[ab].state "$T"/[ab].txt
+		demshot -s "$T/$1" -q --forces "$T/a.txt" -o "$T/a.state" "$T/$2"
+		run --separate-stderr env DEMSHOT_STOP_AFTER=2 demshot -s "$T/$1" -q --forces "$T/b.txt" \
+			--checkpoint "$T/ck" -o "$T/b.state" "$T/$2"
+		[ "$status" -eq 137 ]
+		[ -s "$T/ck" ] && [ ! -e "$T/b.state" ] && [ ! -e "$T/b.txt" ]
+		run --separate-stderr demshot -s "$T/$1" --forces "$T/b.txt" --checkpoint "$T/ck" --resume \
+			-o "$T/b.state" "$T/$2"
+		echo "$1: $stderr"
+		[ "$status" -eq 0 ]
+		grep -q "resuming after pass 1 (2 passes done)" <<< "$stderr"
+		[[ ${stderr_lines[-1]} =~ resumed_after=2 ]]
+		same_run a b
+		[ ! -e "$T/ck" ]
+		# the frames differ from pass to pass: the comparison sees them
+		[ "$(demprofile --pass all "$T/b.state" | grep -v '^#' | cut -d' ' -f1 | sort -u | wc -l)" -eq 3 ]
+	done
+	# a plane-strain checkpoint is not the axisymmetric scene's
+	rm -f "$T/b.state"
+	run --separate-stderr env DEMSHOT_STOP_AFTER=1 demshot -s "$T/fr.yaml" -q --checkpoint "$T/ck" \
+		-o "$T/b.state" "$T/s6.txt"
+	[ "$status" -eq 137 ]
+	run --separate-stderr demshot -s "$T/axisym.yaml" -q --checkpoint "$T/ck" --resume -o "$T/b.state" "$T/a3.txt"
+	echo "$stderr"
+	[ "$status" -eq 1 ]
+	grep -q "ck: the checkpoint is of another scene" <<< "$stderr"
+	[ ! -e "$T/b.state" ]
+}
+
+@test "twod: a 2D run stopped by SIGTERM during a pass resumes from its last checkpoint to the same streams" {
+	twod_passes
+	# passes of 100 us each (about half a second here), so that the
+	# signal finds the run in its second or third pass
+	sed 's/pass_time: 40 us/pass_time: 100 us\n  steady: 1e-30/' "$T/fr.yaml" > "$T/long.yaml"
+	demshot -s "$T/long.yaml" -q --forces "$T/a.txt" -o "$T/a.state" "$T/s6.txt"
+	demshot -s "$T/long.yaml" -q --forces "$T/b.txt" --checkpoint "$T/ck" -o "$T/b.state" "$T/s6.txt" &
+	pid=$!
+	for _ in $(seq 400); do
+		[ -e "$T/ck" ] && break
+		sleep 0.02
+	done
+	[ -e "$T/ck" ]
+	kill -s TERM "$pid"
+	st=0
+	wait "$pid" || st=$?
+	echo "SIGTERM: exit $st"
+	[ "$st" -gt 128 ] || [ "$st" -eq 0 ]
+	if [ "$st" -ne 0 ]; then
+		[ -z "$(find "$T" -maxdepth 1 -name '*.tmp.*')" ]
+		[ -s "$T/ck" ] && [ ! -e "$T/b.state" ]
+		run --separate-stderr demshot -s "$T/long.yaml" --forces "$T/b.txt" --checkpoint "$T/ck" \
+			--resume -o "$T/b.state" "$T/s6.txt"
+		echo "$stderr"
+		[ "$status" -eq 0 ]
+		grep -q "resuming after pass" <<< "$stderr"
+	fi
+	same_run a b
+}
+
+@test "twod: demshot | demprofile | demform on a plane-strain block forms a plane-strain strip (kappa_y 0)" {
+	cat > "$T/strip.yaml" <<-EOF
+	material: {E: 210 GPa, nu: 0.3}
+	plate: {size: [40 mm, 4 mm, 2 mm], element: 2 mm, layers: 12}
+	EOF
+	run --separate-stderr bash -c "demshot -s '$T/plane.yaml' -q '$T/shot.txt' | demprofile | demform -s '$T/strip.yaml'"
+	echo "$output"; echo "$stderr"
+	[ "$status" -eq 0 ]
+	grep -q 'plane strain along y (the profile is of a 2D plane-strain block)' <<< "$stderr"
+	echo "$output" > "$T/sum"
+	[ "$(value plane_strain "$T/sum")" = true ]
+	awk -v x="$(value curvature_x "$T/sum")" -v y="$(value curvature_y "$T/sum")" \
+		'BEGIN { exit !(x != 0 && y < 1e-9 * (x > 0 ? x : -x) && y > -1e-9 * (x > 0 ? x : -x)) }'
+}
