@@ -9,6 +9,8 @@
 #   OUT/cmp-3d-w.prof     3D, the 4 x 4 elements: the square |x|, |y| < 2H
 #   OUT/cmp-2d-h-c.prof   axisymmetric, the disk r < H, weighted by ring
 #   OUT/cmp-2d-h-w.prof   axisymmetric, the disk r < 2H
+#   OUT/cmp-2d-H-*-cart.prof  the same at h = H, sxx replaced by the
+#                         Cartesian mean (s_rr + s_tt) / 2
 #
 # A square of half-side a is compared with the disk of radius a.  In
 # axisymmetry sxx is the radial stress s_rr (demprofile(1)); on the axis it
@@ -25,13 +27,21 @@ bin=${BIN:-../../bin}
 three=$out/single-$h-$alpha-none-90-full
 c=$(awk -v h="$h" 'BEGIN { print 2 * h }')
 w=$(awk -v h="$h" 'BEGIN { print 4 * h }')
-"$bin"/demprofile -q --area "${c}mm:${c}mm" --margin 0 -o "$out/cmp-3d-c.prof" "$three.state"
-"$bin"/demprofile -q --area "${w}mm:${w}mm" --margin 0 -o "$out/cmp-3d-w.prof" "$three.state"
+log=$out/cmp.log           # demprofile's cost lines (and its message, if one fails)
+"$bin"/demprofile -q --area "${c}mm:${c}mm" --margin 0 -o "$out/cmp-3d-c.prof" "$three.state" 2> "$log"
+"$bin"/demprofile -q --area "${w}mm:${w}mm" --margin 0 -o "$out/cmp-3d-w.prof" "$three.state" 2>> "$log"
 for e in $hs; do
 	"$bin"/demprofile -q --area "${c}mm:${c}mm" --margin 0 -o "$out/cmp-2d-$e-c.prof" \
-		"$out/axisym-$e-$alpha.state"
+		"$out/axisym-$e-$alpha.state" 2>> "$log"
 	"$bin"/demprofile -q --area "${w}mm:${w}mm" --margin 0 -o "$out/cmp-2d-$e-w.prof" \
-		"$out/axisym-$e-$alpha.state"
+		"$out/axisym-$e-$alpha.state" 2>> "$log"
+done
+# the Cartesian sxx of the axisymmetric run averaged over a disk: the mean
+# of (s_rr + s_tt) / 2 (on the axis s_rr itself); a 3D square's mean sxx
+# is the same mean of (s_rr + s_tt) / 2 by its x-y symmetry
+for a in c w; do
+	awk '/^#/ { print; next } { $3 = ($3 + $4) / 2; print }' "$out/cmp-2d-$h-$a.prof" \
+		> "$out/cmp-2d-$h-$a-cart.prof"
 done
 
 # metrics PROFILE LOG: peak (MPa), its depth, compressive depth, plastic
@@ -79,10 +89,12 @@ echo "r <= 4 mm, 0.9 mm thick, the same element size, material, damping 0.05 and
 echo "integration in both).  Profiles: the 3D square of half-side a about the impact point"
 echo "(demprofile --area 2a:2a) against the disk r < a of the axisymmetric run, weighted by ring;"
 echo "a = $h mm (the centre line: the 2 x 2 elements at the impact point, the first ring) and"
-echo "a = $(awk -v h="$h" 'BEGIN { print 2 * h }') mm (4 x 4 elements, two rings).  3D sxx against the axisymmetric s_rr."
-echo "Peak: the most compressive sxx (MPa) and its depth; compressive depth: the first zero"
-echo "crossing below the peak; plastic depth: where ep falls to 0.002; ep top: the top layer's."
-echo "Depths in mm; wall and CPU seconds of demshot."
+echo "a = $(awk -v h="$h" 'BEGIN { print 2 * h }') mm (4 x 4 elements, two rings).  3D sxx against the axisymmetric s_rr"
+echo "(and, marked Cartesian, against the disk's mean of (s_rr + s_tt)/2, which a square's mean"
+echo "sxx equals by its symmetry).  Peak: the most compressive sxx (MPa) and its depth;"
+echo "compressive depth: the first zero crossing below the peak; plastic depth: where ep falls"
+echo "to 0.002; ep top: the top layer's (h/2 deep, so it grows as h shrinks).  Depths in mm;"
+echo "wall and CPU seconds of demshot (wall times on a shared machine)."
 echo
 echo "| run | peak sxx | at depth | compressive depth | plastic depth | ep top | elements | wall s | cpu s |"
 echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|"
@@ -92,6 +104,11 @@ for e in $hs; do
 	row "axisymmetric, h = $e, disk r < $h" "$(metrics "$out/cmp-2d-$e-c.prof" "$out/axisym-$e-$alpha.log")"
 	row "axisymmetric, h = $e, disk r < $(awk -v h="$h" 'BEGIN { print 2 * h }')" \
 		"$(metrics "$out/cmp-2d-$e-w.prof" "$out/axisym-$e-$alpha.log")"
+	[ "$e" = "$h" ] || continue
+	row "axisymmetric, h = $e, disk r < $h, Cartesian" \
+		"$(metrics "$out/cmp-2d-$e-c-cart.prof" "$out/axisym-$e-$alpha.log")"
+	row "axisymmetric, h = $e, disk r < $(awk -v h="$h" 'BEGIN { print 2 * h }'), Cartesian" \
+		"$(metrics "$out/cmp-2d-$e-w-cart.prof" "$out/axisym-$e-$alpha.log")"
 done
 echo
 echo "Differences of the axisymmetric runs from the 3D run at h = $h over the same radius"
@@ -103,6 +120,11 @@ for e in $hs; do
 	diff_row "h = $e, a = $h" "$(metrics "$out/cmp-2d-$e-c.prof" "$out/axisym-$e-$alpha.log")" "$m3c"
 	diff_row "h = $e, a = $(awk -v h="$h" 'BEGIN { print 2 * h }')" \
 		"$(metrics "$out/cmp-2d-$e-w.prof" "$out/axisym-$e-$alpha.log")" "$m3w"
+	[ "$e" = "$h" ] || continue
+	diff_row "h = $e, a = $h, Cartesian" \
+		"$(metrics "$out/cmp-2d-$e-c-cart.prof" "$out/axisym-$e-$alpha.log")" "$m3c"
+	diff_row "h = $e, a = $(awk -v h="$h" 'BEGIN { print 2 * h }'), Cartesian" \
+		"$(metrics "$out/cmp-2d-$e-w-cart.prof" "$out/axisym-$e-$alpha.log")" "$m3w"
 done
 echo
 # the largest difference along the depth, centre line, same h
