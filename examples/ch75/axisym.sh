@@ -1,9 +1,12 @@
 #!/bin/sh
-# axisym.sh OUT NAME - one axisymmetric run of the Ch. 7.5 single impact
-# (Ch. 7.5.1, Figs. 7.14-7.15), NAME = axisym-H-ALPHA (e.g. axisym-0.05-5):
+# axisym.sh OUT NAME [SECTION.KEY=VALUE]... - one axisymmetric run of the
+# Ch. 7.5 single impact (Ch. 7.5.1, Figs. 7.14-7.15), NAME =
+# axisym-H-ALPHA[-TAG] (e.g. axisym-0.05-5):
 #
 #   H      element size in the impact area, mm (the 3D run's: 0.05 = d/20)
 #   ALPHA  penalty k_n = alpha E (Ch. 7.5.1 takes k_n = 5E for both models)
+#   TAG    a variant's name; the keys given after NAME are set in its scene
+#          (scene.sh), after the model's own (axisym-checks.sh)
 #
 # The model is scene.yaml made 2D with scene.sh (one statement of the data):
 # dim: 2, block.mode axisym, the cylinder r <= 4 mm (the 3D block's sides are
@@ -17,7 +20,8 @@
 # axisym-report.sh (over the disks it compares).
 set -e
 out=$1 name=$2
-IFS=- read -r model h alpha <<EOF
+shift 2
+IFS=- read -r model h alpha tag <<EOF
 $name
 EOF
 [ "$model" = axisym ] && [ -n "$alpha" ] || { echo "axisym.sh: $name: expected axisym-H-ALPHA" >&2; exit 2; }
@@ -30,7 +34,7 @@ mkdir -p "$out"
 	echo "dim: 2"
 	sh "$here/scene.sh" "$here/scene.yaml" "block.element=$h mm" 'block.size=[4 mm, 0.9 mm]' \
 		'block.fine=0.5 mm' 'block.mode=axisym' \
-		'block.bc={xmax: normal, bottom: fixed, top: free}' "contact.alpha=$alpha"
+		'block.bc={xmax: normal, bottom: fixed, top: free}' "contact.alpha=$alpha" "$@"
 } > "$out/$name.yaml"
 "$bin"/demshot -s "$out/$name.yaml" --rule full -v --forces "$out/$name.forces" \
 	-o "$out/$name.state" "$out/$name.shots" 2> "$out/$name.log"
