@@ -1,5 +1,5 @@
 #!/bin/sh
-# axisym-checks.sh OUT H ALPHA - where the axisymmetric and the 3D single
+# axisym-checks.sh OUT H ALPHA "HS" - where the axisymmetric and the 3D single
 # impact differ (the second part of the axisym section of REPORT.md):
 #
 # 1. column by column: the peak compressive sxx of each element column of
@@ -11,12 +11,13 @@
 #    0.05), the penalty alpha 2 of the other figures (Ch. 7.5.1: 5), the
 #    outer radius 4.513 mm (the disk of the 8 x 8 mm block's area; base 4 mm,
 #    the sides' distance), the rim fixed (base: a roller, as the 3D sides),
-#    and a pass run on to 1e-5 of its peak kinetic energy (base 0.01).
+#    and a pass run on to 1e-5 of its peak kinetic energy (base 0.01);
+# 3. the contact of the 3D run and of the axisymmetric runs at HS.
 #
 # Runs the variants as OUT/axisym-H-ALPHA-TAG (axisym.sh); cost lines and
 # messages of demprofile to OUT/cmp.log.
 set -e
-out=$1 h=$2 alpha=$3
+out=$1 h=$2 alpha=$3 hs=$4
 bin=${BIN:-../../bin}
 here=$(dirname "$0")
 log=$out/cmp.log
@@ -80,4 +81,20 @@ for v in base "damp0.02 run.damping=0.02" "damp0.1 run.damping=0.1" "alpha2 cont
 		END { if (t == "base") { printf "| base | %.1f | %.3f | %.4f | | |\n", p, d, z; exit }
 			printf "| %s | %.1f | %.3f | %.4f | %+.1f %% | %+.1f %% |\n", t, p, d, z,
 				100 * (p - bp) / bp, 100 * (z - bz) / bz }'
+done
+echo
+echo "The contact (force histories): the peak normal force on the shot (the resultant fz), the"
+echo "time in contact and the coefficient of restitution e = J_z / (m v) - 1 (run.sh's)."
+echo
+echo "| run | peak force (N) | in contact (us) | e |"
+echo "|---|---:|---:|---:|"
+for f in "$out/single-$h-$alpha-none-90-full" $(for e in $hs; do echo "$out/axisym-$e-$alpha"; done); do
+	awk -v name="$(basename "$f")" '!/^#/ {
+		if ($8 > m) m = $8
+		if ($8 > 0) { if (t0 == "") t0 = $3; t1 = $3 }
+		if (n++) J += 0.5 * ($8 + pf) * ($3 - pt); pt = $3; pf = $8 }
+		END {
+			# the shot of scene.yaml: mass, speed
+			mass = 4 / 3 * 3.14159265358979 * 0.0005^3 * 7800
+			printf "| %s | %.1f | %.2f | %.3f |\n", name, m, (t1 - t0) * 1e6, J / (mass * 19) - 1 }' "$f.forces"
 done
