@@ -162,6 +162,21 @@ static int read_scene(dem_scene_t *s, struct settings *st, dem_error_t *e)
 	return dem_scene_check(s, sections, e);
 }
 
+/* Whether the stream is of an axisymmetric block: demshot's header line
+ * "# twod mode=axisym" (a 3D stream has no twod line, a plane-strain one
+ * mode=plane). */
+static int is_axisym(const dem_header_t *h)
+{
+	const char *v = dem_header_get(h, "twod");
+	size_t n = strlen("mode=axisym");
+
+	for (const char *p = v; p && *p; p++)
+		if ((p == v || p[-1] == ' ') && strncmp(p, "mode=axisym", n) == 0 &&
+		    (p[n] == '\0' || p[n] == ' '))
+			return 1;
+	return 0;
+}
+
 /* The region: the area (scene, else the stream's "# area", else the whole
  * top face) less the margin.  *from says which. */
 static int find_region(const struct settings *st, dem_state_reader_t *r,
@@ -205,6 +220,7 @@ static int find_region(const struct settings *st, dem_state_reader_t *r,
 	}
 	o->threshold = st->threshold;
 	o->ep_threshold = st->ep_threshold;
+	o->axisym = is_axisym(dem_state_header(r));
 	o->bin = st->bin_size;
 	if (st->bins > 0) {
 		double zlo = HUGE_VAL, zhi = -HUGE_VAL;
@@ -307,9 +323,11 @@ static int open_outputs(struct run *u, dem_state_reader_t *r, const dem_profile_
 	rc = rc ? rc : dem_header_add(&h, "region", "%.17g %.17g %.17g %.17g",
 				      o->lo[0], o->lo[1], o->hi[0], o->hi[1]);
 	if (o->bin > 0)
-		rc = rc ? rc : dem_header_add(&h, "average", "bins size=%.17g area=%s", o->bin, from);
+		rc = rc ? rc : dem_header_add(&h, "average", "bins size=%.17g area=%s%s", o->bin, from,
+					      o->axisym ? " weight=ring" : "");
 	else
-		rc = rc ? rc : dem_header_add(&h, "average", "layers area=%s", from);
+		rc = rc ? rc : dem_header_add(&h, "average", "layers area=%s%s", from,
+					      o->axisym ? " weight=ring" : "");
 	if (rc) {
 		dem_header_free(&h);
 		return dem_error_nomem(e, "header");
@@ -491,8 +509,9 @@ static int open_input(struct run *u, dem_profile_opts_t *o, dem_cost_t *cost, de
 				     "no surface metrics (--surface)", dem_state_name(u->rd));
 	if (cl->com.verbose)
 		fprintf(stderr, "%s: %zu nodes, %zu elements; region x %g to %g m, y %g to %g m "
-			"(area from the %s); %s\n", PROG, m->nn, m->ne, o->lo[0], o->hi[0], o->lo[1],
-			o->hi[1], u->from, o->bin > 0 ? "depth bins" : "element layers");
+			"(area from the %s); %s%s\n", PROG, m->nn, m->ne, o->lo[0], o->hi[0], o->lo[1],
+			o->hi[1], u->from, o->bin > 0 ? "depth bins" : "element layers",
+			o->axisym ? ", axisymmetric (x the radius): weighted by ring" : "");
 	u->o = o;
 	return DEM_OK;
 }

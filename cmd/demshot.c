@@ -630,6 +630,10 @@ static int open_state(const struct cmdline *cl, const struct settings *st,
 	}
 	if (st->dim == 2)       /* the x-z plane: all of the layer in y */
 		ay = m->gy[1] - m->gy[0], cy = 0;
+	/* axisymmetric, no impact area: the whole top face is the disk of the
+	 * block's radius (x the radius from the axis x = 0) */
+	if (st->dim == 2 && st->axisym && !st->have_area)
+		ax = 2 * m->gx[m->nx];
 	int rc;
 
 	/* the metadata lines of the header (kind and columns are the state

@@ -427,6 +427,11 @@ int dem_profile_compute(const dem_mesh_t *m, const double *sig,
 			elem_geom(m, el, c, &vol);
 			if (!in_region(o, c[0], c[1]))
 				continue;
+			/* Pappus: the ring's volume, 2 pi |r_c| times the
+			 * section's area (the y extent, the same for every
+			 * element of a 2D stream, cancels in the means) */
+			if (o->axisym)
+				vol *= 2 * DEM_PI * fabs(c[0]);
 			double depth = ztop - c[2];
 			size_t g = layers ? el / nxy : (size_t)(depth / o->bin);
 			if (g >= ng)
@@ -507,10 +512,12 @@ int dem_surface_compute(const dem_mesh_t *m, const double *u, const double *ep,
 	size_t nt = (size_t)(nx + 1) * (size_t)(ny + 1);
 	double *w = calloc(nt, sizeof *w);
 	unsigned char *faces = calloc(nt, 1);  /* region faces around each node */
+	unsigned char *xside = calloc(nt, 1);  /* 1: a region face at lower x, 2: at higher x */
+	double ytot = m->gy[ny] - m->gy[0];
 	int *label = malloc(nt * sizeof *label), *stack = malloc(nt * sizeof *stack);
 	int rc = DEM_OK;
 
-	if (!w || !faces || !label || !stack) {
+	if (!w || !faces || !xside || !label || !stack) {
 		rc = dem_error_nomem(e, "surface");
 		goto out;
 	}
@@ -520,14 +527,27 @@ int dem_surface_compute(const dem_mesh_t *m, const double *u, const double *ep,
 			double xc = 0.5 * (m->gx[i] + m->gx[i + 1]), yc = 0.5 * (m->gy[j] + m->gy[j + 1]);
 			if (!in_region(o, xc, yc))
 				continue;
-			double a = (m->gx[i + 1] - m->gx[i]) * (m->gy[j + 1] - m->gy[j]);
+			double r0 = m->gx[i], r1 = m->gx[i + 1], a, f[2] = {0.25, 0.25};
+			if (o->axisym) {
+				/* the ring [r0, r1], shared by the row's faces in
+				 * y; each node the integral of its shape function */
+				a = DEM_PI * fabs(r1 * r1 - r0 * r0) * (m->gy[j + 1] - m->gy[j]) / ytot;
+				double rs = fabs(r0) + fabs(r1);
+				if (rs > 0) {
+					f[0] = (2 * fabs(r0) + fabs(r1)) / (6 * rs);
+					f[1] = (fabs(r0) + 2 * fabs(r1)) / (6 * rs);
+				}
+			} else {
+				a = (r1 - r0) * (m->gy[j + 1] - m->gy[j]);
+			}
 			s->area += a;
 			if (ep && ep[dem_mesh_elem(m, i, j, nz - 1)] > o->ep_threshold)
 				s->plastic += a;
 			for (int c = 0; c < 4; c++) {
 				size_t q = (size_t)(i + (c & 1)) + (size_t)w1 * (size_t)(j + (c >> 1));
-				w[q] += 0.25 * a;
+				w[q] += f[c & 1] * a;
 				faces[q]++;
+				xside[q] |= (unsigned char)((c & 1) ? 1 : 2);
 			}
 		}
 	if (!(s->area > 0)) {
@@ -569,7 +589,12 @@ int dem_surface_compute(const dem_mesh_t *m, const double *u, const double *ep,
 			int q = stack[--top], i = q % w1, j = q / w1;
 			area += w[q];
 			deep = fmax(deep, -UZ((size_t)q));
-			cut |= faces[q] < 4;    /* on the region's edge */
+			/* on the region's edge; in axisymmetry only at its
+			 * ends in r, the axis excepted */
+			if (o->axisym)
+				cut |= xside[q] != 3 && !(i == 0 && m->gx[0] == 0);
+			else
+				cut |= faces[q] < 4;
 			int nb[4] = {i > 0 ? q - 1 : -1, i < nx ? q + 1 : -1,
 				     j > 0 ? q - w1 : -1, j < ny ? q + w1 : -1};
 			for (int k = 0; k < 4; k++)
@@ -593,6 +618,7 @@ int dem_surface_compute(const dem_mesh_t *m, const double *u, const double *ep,
 out:
 	free(w);
 	free(faces);
+	free(xside);
 	free(label);
 	free(stack);
 	return rc;

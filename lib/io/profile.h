@@ -83,12 +83,21 @@ typedef struct dem_profile_opts {
 	double threshold;       /* surface: indentation (m) that counts as dimpled */
 	double ep_threshold;    /* surface: effective plastic strain that counts
 				 * as covered (the plastic share) */
+	int axisym;             /* an axisymmetric block (demshot's "# twod
+				 * mode=axisym"): x is the radius r, each
+				 * element and face stands for the ring it
+				 * sweeps about the axis x = 0, and every
+				 * average weights it by that ring */
 } dem_profile_opts_t;
 
 /* One frame's profile: for each element layer (structured mesh only) or
  * depth bin holding at least one element of the region, the volume-
  * weighted mean and standard deviation of the 13 fields over those
- * elements, and their number.  A layer's depth is its centroid's; a bin's
+ * elements, and their number.  In axisymmetry (o->axisym) an element's
+ * volume is that of its ring, 2 pi r_c A for its section A and centroid
+ * radius |r_c| (Pappus): for the rectangles of a grid, the exact integral
+ * of 2 pi r over the section, so a field held constant on each element is
+ * averaged exactly over the solid of revolution.  A layer's depth is its centroid's; a bin's
  * is the volume-weighted mean depth of its elements' centroids.  When the
  * elements of a point all hold the same value the mean is that value
  * exactly and the spread 0.  p is allocated here (dem_profile_free);
@@ -103,7 +112,16 @@ int dem_profile_compute(const dem_mesh_t *m, const double *sig,
  * elements (structured mesh only).  The indentation of a top node is -uz;
  * each node stands for a quarter of each region face around it (the
  * trapezoidal rule).  The plastic share counts each top face whole, by its
- * element's effective plastic strain ep (ep NULL: 0). */
+ * element's effective plastic strain ep (ep NULL: 0).
+ *
+ * In axisymmetry (o->axisym) a top face [r0, r1] stands for its ring,
+ * pi |r1^2 - r0^2| (shared among the faces of its grid row in y by their
+ * widths); each of its nodes for the integral of its linear shape function
+ * over the ring, the nodes at r0 (2 r0 + r1) / (3 (r0 + r1)) of it and
+ * those at r1 (r0 + 2 r1) / (3 (r0 + r1)), half each to the two nodes of
+ * one radius.  A patch is cut (not a whole dimple) only where it reaches
+ * the region's edge in r away from the axis: the y sides of the layer and
+ * the axis are no edges. */
 typedef struct dem_surface {
 	double area;            /* top area of the region, m^2 */
 	double indented;        /* share of it indented deeper than the threshold */

@@ -208,6 +208,36 @@ bad_input() {
 	[[ ${stderr_lines[0]} == *"--bins and --bin-size"* ]]
 }
 
+@test "demprofile: an axisymmetric stream ('# twod mode=axisym') is averaged by ring: x the radius, weight r" {
+	# 8 x 1 x 3 elements of 0.1 mm, x from -0.4 to 0.4 mm; the region x in
+	# [0, 0.4] mm: columns i = 4..7 at radii r = 0.05, 0.15, 0.25, 0.35 mm,
+	# syy = 1000 i.  Each column stands for a ring of volume 2 pi r h^2
+	# (Pappus), so the mean is sum(1000 i r) / sum(r) = 1000 * 4.9 / 0.8 =
+	# 6125 Pa, where the plane mean (every column alike) is 5500.
+	state_stream 8 1 3 1e-4 1 0 '# twod mode=axisym' > "$T/a.state"
+	state_stream 8 1 3 1e-4 1 0 '# twod mode=plane thickness=0.0001' > "$T/p.state"
+	printf 'profile:\n  area: [0.4 mm, 0.2 mm]\n  center: [0.2 mm, 0 mm]\n  margin: 0 mm\n' > "$T/s.yaml"
+	demprofile -s "$T/s.yaml" --surface "$T/as" "$T/a.state" > "$T/a" 2>/dev/null
+	demprofile -s "$T/s.yaml" --surface "$T/ps" "$T/p.state" > "$T/p" 2>/dev/null
+	grep -qx '# average layers area=scene weight=ring' "$T/a"
+	grep -qx '# average layers area=scene' "$T/p"
+	grep -qx '# twod mode=axisym' "$T/a"
+	[ "$(col "$T/a" n | sort -u)" = 4 ]
+	col "$T/a" syy | near 6125 1e-12
+	[ "$(col "$T/p" syy | sort -u)" = 5500 ]
+	# a field constant over each layer keeps its value; depth bins weigh alike
+	col "$T/a" sxx | paste -sd' ' | grep -qx -- '-1000000 -11000000 -21000000'
+	demprofile -s "$T/s.yaml" --bins 1 "$T/a.state" 2>/dev/null > "$T/b"
+	grep -q '^# average bins size=.* area=scene weight=ring$' "$T/b"
+	col "$T/b" syy | near 6125 1e-12
+	# the top face of the region is the disk r < 0.4 mm: pi (0.4 mm)^2,
+	# against the strip's 0.4 x 0.1 mm (the table's column 10, area)
+	grep -v '^#' "$T/as" | awk '{ print $10 }' | near 5.026548245743669e-07 1e-12
+	grep -v '^#' "$T/ps" | awk '{ print $10 }' | near 4e-08 1e-12
+	# -v says so
+	demprofile -v -s "$T/s.yaml" "$T/a.state" 2>&1 > /dev/null | grep -q 'axisymmetric (x the radius): weighted by ring'
+}
+
 @test "demprofile --pass N|last|all: the passes written; a missing pass is bad input" {
 	state_stream 2 2 2 1e-4 3 > "$T/a.state"
 	demprofile "$T/a.state" 2>/dev/null | col /dev/stdin pass > "$T/all" || true

@@ -57,6 +57,7 @@ TXT
 	# the state stream: a 3D grid one element thick, marked 2D
 	gzip -dc "$T/p.state" | grep -a -m1 '^# grid' | grep -qx '# grid 25 1 12'
 	gzip -dc "$T/p.state" | grep -a -m1 '^# twod' | grep -qx '# twod mode=plane thickness=0.001'
+	grep -qx '# average layers area=stream' <<< "$output"
 	# the profile: 12 element layers, compressive near the surface
 	[ "$(sed '$d' <<< "$output" | grep -vc '^#')" -eq 12 ]
 	grep -v '^#' <<< "$output" | head -1 | awk '{ exit !($3 < 0) }'
@@ -72,6 +73,11 @@ TXT
 	grep -q '^demshot: 2D axisymmetric block of' <<< "$stderr"
 	grep -q 'one sphere on the axis' <<< "$stderr"
 	gzip -dc "$T/a.state" | grep -a -m1 '^# twod' | grep -qx '# twod mode=axisym'
+	# no impact area in the shot stream: the whole top face, the disk of
+	# the block's radius (x from -4 to 4 mm), all of the layer in y
+	gzip -dc "$T/a.state" | grep -a -m1 '^# area' | awk '{ exit !($3 == -0.004 && $4 == -5e-05 && $5 == 0.004 && $6 == 5e-05) }'
+	# demprofile averages it by ring (demprofile(1)); the plane one not
+	demprofile "$T/a.state" 2>/dev/null | grep -qx '# average layers area=stream weight=ring'
 	sed 's/^0 0 0 0 0.0005 0 0 -10$/0 0 0.0001 0 0.0005 0 0 -10/' "$T/shot.txt" > "$T/off.txt"
 	run --separate-stderr demshot -s "$T/axisym.yaml" -o "$T/b.state" "$T/off.txt"
 	echo "$stderr"

@@ -6,7 +6,10 @@
  * volume-weighted mean and spread; coverage of spherical dimples of known
  * size against the analytic area (pi rho^2 each) and against a brute-force
  * count of the mesh nodes inside the dimples; Ra of a sine surface against
- * 2A/pi. */
+ * 2A/pi.  Axisymmetric frames (x the radius): the ring-weighted mean of
+ * f(r) = a + b r^2 over the disk r < R0, a + b R0^2 / 2, and the surface of
+ * a conical dimple (area pi R0^2, Ra, plastic share (r_p / R0)^2) in
+ * closed form. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -264,7 +267,7 @@ static void test_layers_exact(void **state)
 	make_mesh(&m, NXY, NXY, NZ, GXY, GXY, GZ);
 	alloc_fields(&f, m.ne);
 	layered_fields(&m, &f);
-	dem_profile_opts_t o = {{-1e-3, -1e-3}, {1e-3, 1e-3}, 0, 1e-6, 0.002};
+	dem_profile_opts_t o = {{-1e-3, -1e-3}, {1e-3, 1e-3}, 0, 1e-6, 0.002, 0};
 	assert_int_equal(dem_profile_compute(&m, f.sig, f.eps, f.ep, &o, &p, &e), 0);
 	assert_int_equal(p.n, NZ);
 	for (size_t i = 0; i < p.n; i++) {
@@ -283,7 +286,7 @@ static void test_layers_exact(void **state)
 	dem_profile_free(&p);
 
 	/* a margin of one element each side: 6 x 6 elements, same values */
-	dem_profile_opts_t o2 = {{-0.75e-3, -0.75e-3}, {0.75e-3, 0.75e-3}, 0, 1e-6, 0.002};
+	dem_profile_opts_t o2 = {{-0.75e-3, -0.75e-3}, {0.75e-3, 0.75e-3}, 0, 1e-6, 0.002, 0};
 	assert_int_equal(dem_profile_compute(&m, f.sig, f.eps, f.ep, &o2, &p, &e), 0);
 	assert_int_equal(p.count[0], 6 * 6);
 	assert_true(p.sig[0] == layer_value(NZ - 1, 0));
@@ -291,14 +294,14 @@ static void test_layers_exact(void **state)
 
 	/* a region reaching one column of the coarse elements takes their
 	 * 1e12 values in: the mean moves (so the test above could fail) */
-	dem_profile_opts_t o3 = {{-1.25e-3, -1e-3}, {1e-3, 1e-3}, 0, 1e-6, 0.002};
+	dem_profile_opts_t o3 = {{-1.25e-3, -1e-3}, {1e-3, 1e-3}, 0, 1e-6, 0.002, 0};
 	assert_int_equal(dem_profile_compute(&m, f.sig, f.eps, f.ep, &o3, &p, &e), 0);
 	assert_int_equal(p.count[0], 8 * 8 + 8);
 	assert_true(p.sig[0] > 1e10);
 	dem_profile_free(&p);
 
 	/* an empty region */
-	dem_profile_opts_t o4 = {{0.01, 0.01}, {0.02, 0.02}, 0, 1e-6, 0.002};
+	dem_profile_opts_t o4 = {{0.01, 0.01}, {0.02, 0.02}, 0, 1e-6, 0.002, 0};
 	assert_int_equal(dem_profile_compute(&m, f.sig, f.eps, f.ep, &o4, &p, &e), DEM_EINPUT);
 	assert_non_null(strstr(e.msg, "no element centroid in the region"));
 	free_fields(&f);
@@ -326,7 +329,7 @@ static void test_layers_and_bins_brute_force(void **state)
 	/* a region that cuts through the graded elements: [-1.6, 0.6] x [-0.4, 1.9] mm */
 	double bins[3] = {0, 0.12e-3, 0.5e-3};
 	for (int b = 0; b < 3; b++) {
-		dem_profile_opts_t o = {{-1.6e-3, -0.4e-3}, {0.6e-3, 1.9e-3}, bins[b], 1e-6, 0.002};
+		dem_profile_opts_t o = {{-1.6e-3, -0.4e-3}, {0.6e-3, 1.9e-3}, bins[b], 1e-6, 0.002, 0};
 		assert_int_equal(dem_profile_compute(&m, f.sig, f.eps, f.ep, &o, &p, &e), 0);
 		/* brute force, group by group */
 		int ng = b == 0 ? NZ : (int)(2e-3 / bins[b]) + 1;
@@ -432,7 +435,7 @@ static void test_coverage_dimples(void **state)
 		dem_error_t e = {0};
 		make_mesh(&m, n, n, 1, g, g, gz);
 		double *u = dimple_field(&m, R, d0, 4, pitch);
-		dem_profile_opts_t o = {{0, 0}, {4e-3, 4e-3}, 0, t, 0.002};
+		dem_profile_opts_t o = {{0, 0}, {4e-3, 4e-3}, 0, t, 0.002, 0};
 		assert_int_equal(dem_surface_compute(&m, u, NULL, &o, &s, &e), 0);
 		double exact = 16 * DEM_PI * rho * rho / (4e-3 * 4e-3);
 		/* brute force: the trapezoid weights of the nodes strictly
@@ -482,7 +485,7 @@ static void test_coverage_dimples(void **state)
 	dem_error_t e = {0};
 	make_mesh(&m, n, n, 1, g, g, gz);
 	double *u = dimple_field(&m, R, d0, 4, 0.3e-3);
-	dem_profile_opts_t o = {{0, 0}, {2e-3, 2e-3}, 0, t, 0.002};
+	dem_profile_opts_t o = {{0, 0}, {2e-3, 2e-3}, 0, t, 0.002, 0};
 	assert_int_equal(dem_surface_compute(&m, u, NULL, &o, &s, &e), 0);
 	long in = 0, N = 2000;
 	for (long j = 0; j < N; j++)
@@ -520,7 +523,7 @@ static void test_roughness(void **state)
 	double *u = calloc(3 * m.nn, sizeof *u);
 	for (size_t q = 0; q < m.nn; q++)
 		u[3 * q + 2] = A * sin(2 * DEM_PI * m.X[3 * q] / L) - 1e-6;  /* plus a sink */
-	dem_profile_opts_t o = {{0, 0}, {2e-3, 1e-3}, 0, 10e-6, 0.002};
+	dem_profile_opts_t o = {{0, 0}, {2e-3, 1e-3}, 0, 10e-6, 0.002, 0};
 	assert_int_equal(dem_surface_compute(&m, u, NULL, &o, &s, &e), 0);
 	assert_close(s.ra, 2 * A / DEM_PI, 5e-4 * 2 * A / DEM_PI);
 	assert_true(s.indented == 0);
@@ -558,7 +561,7 @@ static void test_plastic_share(void **state)
 	ep[dem_mesh_elem(&m, 0, 0, 2)] = 0.002;
 	for (int q = 0; q < 2; q++) {
 		/* q = 1: the region x <= 2 mm, half the disk */
-		dem_profile_opts_t o = {{0, 0}, {q ? 2e-3 : 4e-3, 4e-3}, 0, 1e-6, 0.002};
+		dem_profile_opts_t o = {{0, 0}, {q ? 2e-3 : 4e-3, 4e-3}, 0, 1e-6, 0.002, 0};
 		assert_int_equal(dem_surface_compute(&m, u, ep, &o, &s, &e), 0);
 		int cnt = 0, all = 0;
 		for (int j = 0; j < n; j++)
@@ -573,12 +576,164 @@ static void test_plastic_share(void **state)
 		assert_close(s.plastic, (double)cnt / all, 1e-12);
 		assert_close(s.indented, 0, 0);
 	}
-	dem_profile_opts_t o = {{0, 0}, {4e-3, 4e-3}, 0, 1e-6, 0.002};
+	dem_profile_opts_t o = {{0, 0}, {4e-3, 4e-3}, 0, 1e-6, 0.002, 0};
 	assert_int_equal(dem_surface_compute(&m, u, NULL, &o, &s, &e), 0);
 	assert_close(s.plastic, 0, 0);
 	free(u);
 	free(ep);
 	free(g);
+	dem_mesh_free(&m);
+}
+
+/* ---- axisymmetric frames ------------------------------------------------ */
+
+/* A 2D axisymmetric block as demshot writes it: x the radius from the axis,
+ * graded (0.1 to 0.4 mm elements), one element thick in y; 4 layers. */
+static const double GR[] = {0, 0.1e-3, 0.2e-3, 0.3e-3, 0.45e-3, 0.6e-3, 0.75e-3, 0.9e-3,
+			    1.2e-3, 1.6e-3, 2e-3};
+static const double GY1[] = {-0.05e-3, 0.05e-3};
+static const double GZ4[] = {-0.5e-3, -0.3e-3, -0.15e-3, -0.05e-3, 0};
+enum { NR = 10, NZ4 = 4 };
+
+/* f(r) = a + b r^2 with a per layer and field: each element holds its mean
+ * over its ring, a + b (r0^2 + r1^2) / 2 (the integral of f 2 pi r dr over
+ * [r0, r1] by the ring's area), so the ring-weighted mean over the disk
+ * r < R0 is exactly that of f, a + b R0^2 / 2, for R0 on a grid line. */
+static double ring_a(int k, int c)
+{
+	return (c < 6 ? -1.5e8 : c < 12 ? -2e-3 : 0.05) * (1 + 0.3 * k) * (c % 6 + 1) / 6.0;
+}
+
+static double ring_b(int c)
+{
+	return (c < 6 ? 2e14 : c < 12 ? 3e3 : -4e4) * (c % 5 + 1) / 5.0;   /* per m^2 */
+}
+
+static void test_axisym_ring_mean(void **state)
+{
+	dem_mesh_t m;
+	struct fields f;
+	dem_profile_t p;
+	dem_error_t e = {0};
+	(void)state;
+	make_mesh(&m, NR, 1, NZ4, GR, GY1, GZ4);
+	alloc_fields(&f, m.ne);
+	for (int k = 0; k < NZ4; k++)
+		for (int i = 0; i < NR; i++) {
+			size_t el = dem_mesh_elem(&m, i, 0, k);
+			double q = 0.5 * (GR[i] * GR[i] + GR[i + 1] * GR[i + 1]);
+			for (int c = 0; c < 13; c++) {
+				double v = ring_a(k, c) + ring_b(c) * q;
+				if (c < 6)
+					f.sig[6 * el + c] = v;
+				else if (c < 12)
+					f.eps[6 * el + c - 6] = v;
+				else
+					f.ep[el] = v;
+			}
+		}
+	const double R0[3] = {0.3e-3, 0.9e-3, 2e-3};
+	const int inside[3] = {3, 7, 10};
+	for (int t = 0; t < 3; t++) {
+		for (int bins = 0; bins < 2; bins++) {
+			/* the disk r < R0: the x range [-R0, R0] (centroids), all of y;
+			 * bins of 0.07 mm hold one layer each (centroids 0.025,
+			 * 0.1, 0.225, 0.4 mm deep) */
+			dem_profile_opts_t o = {{-R0[t], -1}, {R0[t], 1}, bins ? 0.07e-3 : 0, 1e-6, 0.002, 1};
+			assert_int_equal(dem_profile_compute(&m, f.sig, f.eps, f.ep, &o, &p, &e), 0);
+			assert_int_equal(p.n, NZ4);
+			for (size_t i = 0; i < p.n; i++) {
+				int k = NZ4 - 1 - (int)i;
+				assert_int_equal(p.count[i], inside[t]);
+				assert_close(p.depth[i], -0.5 * (GZ4[k] + GZ4[k + 1]), 1e-18);
+				for (int c = 0; c < 13; c++) {
+					double want = ring_a(k, c) + ring_b(c) * R0[t] * R0[t] / 2;
+					double got = c < 6 ? p.sig[6 * i + c] : c < 12 ? p.eps[6 * i + c - 6] : p.ep[i];
+					double scale = fabs(ring_a(k, c)) + fabs(ring_b(c)) * R0[t] * R0[t];
+					assert_close(got, want, 1e-13 * scale);
+					/* the spread: ring-weighted, by brute force */
+					double W = 0, S2 = 0;
+					for (int j = 0; j < inside[t]; j++) {
+						double w = (GR[j + 1] * GR[j + 1] - GR[j] * GR[j]);
+						double d = ring_a(k, c) + ring_b(c) * 0.5 *
+							   (GR[j] * GR[j] + GR[j + 1] * GR[j + 1]) - want;
+						W += w;
+						S2 += w * d * d;
+					}
+					assert_close(p.sd[13 * i + c], sqrt(S2 / W), 1e-9 * scale);
+				}
+			}
+			dem_profile_free(&p);
+		}
+		/* the same disk averaged as a plane strip (every element alike)
+		 * misses the closed form by far: b R0^2 / 2 against the mean of
+		 * (r0^2 + r1^2) / 2 over the elements, 0.3 of the ring term and
+		 * more (so the test above can fail) */
+		dem_profile_opts_t o = {{-R0[t], -1}, {R0[t], 1}, 0, 1e-6, 0.002, 0};
+		assert_int_equal(dem_profile_compute(&m, f.sig, f.eps, f.ep, &o, &p, &e), 0);
+		double want = ring_a(NZ4 - 1, 0) + ring_b(0) * R0[t] * R0[t] / 2;
+		assert_true(fabs(p.sig[0] - want) > 0.1 * ring_b(0) * R0[t] * R0[t] / 2);
+		dem_profile_free(&p);
+	}
+	free_fields(&f);
+	dem_mesh_free(&m);
+}
+
+/* The top of an axisymmetric block indented as a cone, uz = -(d0 - k r):
+ * linear in r, so the interpolant the node weights integrate is exact.
+ * Over the disk r < R0: area pi R0^2; with the cone's mean level at
+ * r* = 2 R0 / 3, a grid line, Ra = 2 k (r*^3/6 + (R0^3 - r*^3)/3 -
+ * r* (R0^2 - r*^2)/2) / R0^2; the deepest point d0 on the axis; a plastic
+ * disk of top faces r < r_p covers (r_p / R0)^2 of it (a strip would say
+ * r_p / R0).  The indented nodes i <= n (r_n < r_t < r_n+1) weigh the
+ * integral of their shape functions, r_n^2 / 2 + h (2 r_n + r_n+1) / 6 of
+ * r dr (h = r_n+1 - r_n); a whole dimple, on the axis. */
+static void test_axisym_surface(void **state)
+{
+	const double R0 = 0.9e-3, rs = 0.6e-3, d0 = 30e-6, kc = 20e-3;   /* k: 20 um per mm */
+	dem_mesh_t m;
+	dem_surface_t s;
+	dem_error_t e = {0};
+	(void)state;
+	make_mesh(&m, NR, 1, NZ4, GR, GY1, GZ4);
+	double *u = calloc(3 * m.nn, sizeof *u), *ep = calloc(m.ne, sizeof *ep);
+	assert_non_null(u);
+	assert_non_null(ep);
+	for (size_t n = 0; n < m.nn; n++)
+		u[3 * n + 2] = -(d0 - kc * m.X[3 * n]);
+	for (int i = 0; i < 4; i++)             /* plastic top faces r < 0.45 mm */
+		ep[dem_mesh_elem(&m, i, 0, NZ4 - 1)] = 0.01;
+	ep[dem_mesh_elem(&m, 2, 0, NZ4 - 2)] = 0.01;    /* beneath: not counted */
+	/* threshold: r_t = 0.5 mm, between the nodes at 0.45 and 0.6 mm */
+	const double thr = d0 - kc * 0.5e-3;
+	dem_profile_opts_t o = {{-R0, -1}, {R0, 1}, 0, thr, 0.002, 1};
+	assert_int_equal(dem_surface_compute(&m, u, ep, &o, &s, &e), 0);
+	assert_close(s.area, DEM_PI * R0 * R0, 1e-12 * DEM_PI * R0 * R0);
+	double ra = 2 * kc * (rs * rs * rs / 6 + (R0 * R0 * R0 - rs * rs * rs) / 3 -
+			      rs * (R0 * R0 - rs * rs) / 2) / (R0 * R0);
+	assert_close(s.ra, ra, 1e-12 * ra);
+	assert_close(s.depth_max, d0, 1e-18);
+	assert_close(s.plastic, 0.45e-3 * 0.45e-3 / (R0 * R0), 1e-12);
+	double rn = 0.45e-3, h = 0.15e-3;
+	double ind = 2 * DEM_PI * (rn * rn / 2 + h * (2 * rn + rn + h) / 6);
+	assert_close(s.indented, ind / (DEM_PI * R0 * R0), 1e-12);
+	assert_int_equal(s.patches, 1);
+	assert_int_equal(s.dimples, 1);
+	assert_close(s.radius, sqrt(ind / DEM_PI), 1e-12 * R0);
+	assert_close(s.depth_mean, d0, 1e-18);
+	/* plane weighting of the same surface: the plastic share is the strip's */
+	o.axisym = 0;
+	assert_int_equal(dem_surface_compute(&m, u, ep, &o, &s, &e), 0);
+	assert_close(s.plastic, 0.45e-3 / R0, 1e-12);
+	assert_int_equal(s.dimples, 0);         /* every node on the layer's y sides */
+	/* a region ending inside the dimple (r < 0.3 mm) cuts it */
+	dem_profile_opts_t o2 = {{-0.3e-3, -1}, {0.3e-3, 1}, 0, thr, 0.002, 1};
+	assert_int_equal(dem_surface_compute(&m, u, ep, &o2, &s, &e), 0);
+	assert_int_equal(s.patches, 1);
+	assert_int_equal(s.dimples, 0);
+	assert_close(s.indented, 1, 1e-15);
+	free(u);
+	free(ep);
 	dem_mesh_free(&m);
 }
 
@@ -593,6 +748,8 @@ int main(void)
 		cmocka_unit_test(test_coverage_dimples),
 		cmocka_unit_test(test_roughness),
 		cmocka_unit_test(test_plastic_share),
+		cmocka_unit_test(test_axisym_ring_mean),
+		cmocka_unit_test(test_axisym_surface),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }
