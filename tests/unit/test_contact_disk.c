@@ -23,7 +23,9 @@
  * impact speed to rounding.  Coulomb's law for an impact sliding
  * throughout (a solid disk: 3 mu (1 + e) v_n < v_t): J_t = mu J_n.  Statics
  * of a pair: force and moment of the disk's force at P and of the node
- * forces cancel about any point.
+ * forces cancel about any point.  The potential scheme: its forces against
+ * central differences of its energy, and its energy over a straight row
+ * of segments against the law's, U(delta) = k_n delta^(m+1) / (m+1).
  *
  * Data: the Ch. 7.4 case (thesis-data.yaml, shot_peening_2d): disk R 20
  * mm at 12.2 m/s, E 210 GPa, nu 0.3; alpha in {0.5, 1, 2.5, 5, 10}; the

@@ -416,8 +416,9 @@ static void test_alpha_linear(void **state)
  * alpha 0.5 gains energy: E max/start 1.0136 here, 1.0171 on
  * examples/twod's 0.5 mm elements, the same at lambda 0.05 (so not the
  * step); 1.0028 at alpha 1.  The width scheme loses energy instead
- * (E end/start 0.974 at alpha 0.5).  3D has its potential scheme for
- * this; 2D has none yet.  Skipped while it fails, with its figures. */
+ * (E end/start 0.974 at alpha 0.5).  The potential scheme (disk.h, the
+ * twin of 3D's) holds it: alpha_sweep.  Skipped while it fails, with its
+ * figures. */
 static void test_alpha_linear_area_known(void **state)
 {
 	(void)state;
