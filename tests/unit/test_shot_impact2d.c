@@ -456,8 +456,9 @@ static int soft_case(double alpha, int sch)
 	run(&s, &r);
 	int ok = r.Emax <= 1.01 * r.E0;
 	printf("# soft block, %s scheme, alpha %g, lambda %g: Fmax %.4g N/m, E max/start %.6g, end/start %.6g, "
-	       "exit vy %.4g m/s, deepest node %.3f of the wall's overlap\n", SCHEME_NAMES[sch], alpha,
-	       s.lambda, r.Fmax / THICK, r.Emax / r.E0, r.Eend / r.E0, r.v[0][1], r.pmax / u);
+	       "exit vy %.4g m/s, deepest node %.3f of the wall's overlap (largest overlap of a segment's "
+	       "line %.3g)\n", SCHEME_NAMES[sch], alpha, s.lambda, r.Fmax / THICK, r.Emax / r.E0,
+	       r.Eend / r.E0, r.v[0][1], r.pmax / u, r.dmax / u);
 	assert_int_equal(r.rc, DEM_OK);
 	if (ok) {
 		assert_true(r.v[0][1] > 0 && r.v[0][1] < v);
