@@ -242,8 +242,10 @@ static int read_shots(dem_scene_t *s, int accuracy, struct settings *st, dem_err
 	static const char *const laws[] = {"power", "hertz", NULL};
 	static const char *const partials[] = {"potential", "area", "volume", NULL};
 	/* 2D: the overlap area or contact width factor of disk.h (Eqs. 3.10,
-	 * 3.11); axisymmetric: the ring's surface (shotset2d.h), not chosen */
-	static const char *const partials2[] = {"area", "width", NULL};
+	 * 3.11), or its potential scheme; axisymmetric: the ring's surface
+	 * (shotset2d.h), not chosen */
+	static const char *const partials2[] = {"area", "width", "potential", NULL};
+	static const int partial2_ids[] = {DEM_PARTIAL_AREA, DEM_PARTIAL_WIDTH, DEM_PARTIAL_POTENTIAL};
 	static const char *const models[] = {"rigid", "fe", NULL};
 	const int plane2 = st->dim == 2 && !st->axisym;
 	dem_contact_param_t p = {0};
@@ -293,7 +295,7 @@ static int read_shots(dem_scene_t *s, int accuracy, struct settings *st, dem_err
 		if (law == 1 ? dem_law_ghertz2d(&p.law, st->mat.E, st->mat.nu, e)
 			     : dem_law_init_dim(&p.law, alpha, st->mat.E, m, 2, e))
 			return e->code;
-		partial = partial ? DEM_PARTIAL_WIDTH : DEM_PARTIAL_AREA;
+		partial = partial2_ids[partial];
 	} else if (law == 1) {
 		if (dem_law_hertz(&p.law, st->mat.E, st->mat.nu, e))
 			return e->code;

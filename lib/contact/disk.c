@@ -86,7 +86,50 @@ int dem_segment_geom(const double O[2], double R, const double A[2], const doubl
 	g->b = b;
 	g->x0 = x0, g->x1 = x1;
 	g->xi = (sc + px) / L;
+	g->pot = scheme == DEM_PARTIAL_POTENTIAL && !g->full;
+	g->R = R, g->L = L, g->sc = sc;
+	g->t[0] = tx, g->t[1] = ty, g->nf[0] = nx, g->nf[1] = ny;
 	return 1;
+}
+
+void dem_segment_forces(const dem_seg_geom_t *g, const dem_contact_out_t *o, double m, double F[2],
+                        double Fnode[2][2], double *Phi)
+{
+	double xi = g->xi;
+	if (!g->pot) {
+		for (int i = 0; i < 2; i++) {
+			F[i] = o->F[i];
+			Fnode[0][i] = -(1 - xi) * o->F[i];
+			Fnode[1][i] = -xi * o->F[i];
+		}
+		if (Phi) {
+			double x = g->delta - o->bg0;
+			*Phi = x > 0 ? g->gamma * o->bc * pow(x, m + 1) / (m + 1) : 0;
+		}
+		return;
+	}
+	/* the strip swept by the segment, x along t from C, y across (the
+	 * extrusion), cut to a rectangle that holds the circle's part in it */
+	double h = 2 * g->b, xl = fmax(-g->sc, -h), xr = fmin(g->L - g->sc, h);
+	double x[4] = { xl, xr, xr, xl }, y[4] = { -h, -h, h, h };
+	double A0, B0, B1[2], B2[3];
+	dem_potential_polygon(o->bc, m, g->R - o->bg0, g->d, x, y, 4, &A0, &B0, B1, B2);
+	/* F_O = int 2 w' (y - O) dA, y - O = x t - d nf; the nodes (N_A = 1 -
+	 * tau, N_B = tau, tau = (sc + x) / L, grad N = -+ t / L):
+	 * dPhi/dX_a = A0 g_a t + N_a(C) (B1x t - d B0 nf) + g_a (B2xx t - d B1x nf) */
+	double ga[2] = { -1 / g->L, 1 / g->L }, Nc[2] = { 1 - g->sc / g->L, g->sc / g->L };
+	for (int i = 0; i < 2; i++) {
+		double rest = o->F[i] - o->Fe * g->n[i];  /* damping and friction, at P */
+		double fo = B1[0] * g->t[i] - g->d * B0 * g->nf[i];
+		F[i] = rest + fo;
+		for (int a = 0; a < 2; a++) {
+			double dp = A0 * ga[a] * g->t[i] + Nc[a] * fo +
+				    ga[a] * (B2[0] * g->t[i] - g->d * B1[0] * g->nf[i]);
+			Fnode[a][i] = -(a ? xi : 1 - xi) * rest - dp;
+		}
+	}
+	if (Phi)
+		*Phi = A0;
 }
 
 int dem_contact_disk_segment(const dem_contact_model_t *cm, const dem_sphere_t *s,
@@ -117,9 +160,8 @@ int dem_contact_disk_segment(const dem_contact_model_t *cm, const dem_sphere_t *
 	k.meff = meff;
 	k.dt = dt;
 	cm->kernel(cm, &k, st, &out->c);
-	for (int i = 0; i < 2; i++) {
-		out->Fnode[0][i] = -(1 - xi) * out->c.F[i];
-		out->Fnode[1][i] = -xi * out->c.F[i];
-	}
+	double F[2];
+	dem_segment_forces(g, &out->c, cm->m, F, out->Fnode, NULL);
+	out->c.F[0] = F[0], out->c.F[1] = F[1];
 	return 1;
 }

@@ -301,7 +301,8 @@ static inline void br_wW(const branch_t *B, double q, double *w, double *W)
 }
 
 /* The integrals over the part of the circle (centre C = 0, radius b) inside
- * the triangle (x, y): A0 = int w dA, B0 = int 2 w' dA, B1 = int 2 w' y dA,
+ * the convex polygon (x, y) of nv vertices, anticlockwise (a facet's
+ * triangle; disk.c's strip): A0 = int w dA, B0 = int 2 w' dA, B1 = int 2 w' y dA,
  * B2 = int 2 w' y y^T dA (w' = dw/d(q^2), y in-plane relative to C).  The
  * region is summed from the signed edge pieces as S_p is (sectors in
  * closed form, the triangles (0, P, Q) along their chords, the radial
@@ -312,14 +313,14 @@ static inline void br_wW(const branch_t *B, double q, double *w, double *W)
  * circle (w ~ g^m there): the forces then match central differences of the
  * potential to 1e-6 of the force (tests/unit/test_contact_facet.c), against
  * 3e-4 with 8 plain points. */
-static void local_integrals(const branch_t *B, const double x[3], const double y[3], double b,
+static void local_integrals(const branch_t *B, const double *x, const double *y, int nv, double b,
                             double *A0, double *B0, double B1[2], double B2[3])
 {
 	*A0 = *B0 = 0;
 	B1[0] = B1[1] = B2[0] = B2[1] = B2[2] = 0;
 	double d2 = B->d * B->d;
-	for (int e = 0; e < 3; e++) {
-		int f = (e + 1) % 3;
+	for (int e = 0; e < nv; e++) {
+		int f = (e + 1) % nv;
 		double ax = x[e], ay = y[e], dx = x[f] - ax, dy = y[f] - ay, t[4];
 		edge_cuts(ax, ay, dx, dy, b, t);
 		for (int i = 0; i < 3; i++) {
@@ -398,7 +399,7 @@ void dem_facet_forces(const dem_facet_geom_t *g, const dem_contact_out_t *o, dou
 		double F0 = B.c * br_pow(m, B.delta);
 		B.w0 = F0 / (2 * DEM_PI * B.d);
 		B.W0 = F0 * B.delta / (m + 1);
-		local_integrals(&B, g->x, g->y, sqrt(B.delta * (B.R + B.d)), &A0, &B0, B1, B2);
+		local_integrals(&B, g->x, g->y, 3, sqrt(B.delta * (B.R + B.d)), &A0, &B0, B1, B2);
 	}
 	/* dPhi/dO = -int 2 w' (y - O) dA with y - O = (y - C) - d nf */
 	double b1[3];
@@ -420,6 +421,21 @@ void dem_facet_forces(const dem_facet_geom_t *g, const dem_contact_out_t *o, dou
 	}
 	if (Phi)
 		*Phi = A0;
+}
+
+void dem_potential_polygon(double c, double m, double R, double d, const double *x,
+                           const double *y, int nv, double *A0, double *B0, double B1[2],
+                           double B2[3])
+{
+	branch_t B = { .c = c, .m = m, .R = R, .d = d };
+	B.delta = R - d;
+	*A0 = *B0 = B1[0] = B1[1] = B2[0] = B2[1] = B2[2] = 0;
+	if (!(B.delta > 0) || !(c > 0) || !(d > 0))
+		return;
+	double F0 = c * br_pow(m, B.delta);
+	B.w0 = F0 / (2 * DEM_PI * d);
+	B.W0 = F0 * B.delta / (m + 1);
+	local_integrals(&B, x, y, nv, sqrt(B.delta * (R + d)), A0, B0, B1, B2);
 }
 
 int dem_contact_sphere_facet(const dem_contact_model_t *cm, const dem_sphere_t *s,

@@ -111,6 +111,20 @@ double dem_triangle_closest(const double O[3], const double X[3][3], double q[3]
 void dem_facet_forces(const dem_facet_geom_t *g, const dem_contact_out_t *o, double m,
                       double F[3], double Fnode[3][3], double *Phi);
 
+/* The integrals of the potential scheme over a plane region: w(q) =
+ * F(R - q) / (2 pi q), F(g) = c g^m (g > 0; a branch of the law, R the
+ * branch's radius, R - g0), q the distance of a point of the plane from O,
+ * d > 0 O's distance from the plane; over the part of the convex polygon
+ * (x, y), nv vertices anticlockwise in plane axes with C (O's foot) at the
+ * origin, where q < R:
+ *     A0 = int w dA (the energy Phi), B0 = int 2 w' dA, B1 = int 2 w' y dA,
+ *     B2 = int 2 w' y y^T dA (xx, xy, yy)
+ * (w' = dw/d(q^2), y the in-plane position).  The facet's triangle here;
+ * the strip swept by a segment in disk.c. */
+void dem_potential_polygon(double c, double m, double R, double d, const double *x,
+                           const double *y, int nv, double *A0, double *B0, double B1[2],
+                           double B2[3]);
+
 /* A rigid sphere (the contactor). */
 typedef struct dem_sphere {
 	double x[3];  /* centre */

@@ -445,11 +445,10 @@ static void shot_forces(dem_shotset2d_t *S, size_t s, const double *v, double dt
 		kin.meff = dem_contact_meff(b->M, S->smass[k]) / g->gamma;
 		kin.dt = dt;
 		S->cm.kernel(&S->cm, &kin, cs, &o);
-		for (int i = 0; i < 2; i++) {
-			po->Fnode[0][i] = -(1 - xi) * o.F[i];
-			po->Fnode[1][i] = -xi * o.F[i];
-			b->F[i] += o.F[i];
-		}
+		double F[2];
+		dem_segment_forces(g, &o, S->cm.m, F, po->Fnode, NULL);
+		for (int i = 0; i < 2; i++)
+			b->F[i] += F[i];
 		*T += o.T[2];
 		b->Fn += o.Fn;
 		b->Ft += o.Ft;

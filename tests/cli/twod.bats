@@ -66,6 +66,17 @@ TXT
 		END { exit !(bad == 0 && m > 10 && m < 1e5) }'
 }
 
+@test "twod: contact.partial potential is taken in plane strain, named in the log, and keeps the block's energy balance" {
+	printf 'contact:\n  partial: potential\n' | cat "$T/plane.yaml" - > "$T/pot.yaml"
+	run --separate-stderr demshot -s "$T/pot.yaml" -o "$T/pot.state" "$T/shot.txt"
+	echo "$stderr"
+	[ "$status" -eq 0 ]
+	grep -q 'effects: .*2D plane strain.*shots: contact law m=1.5 (2D), partial potential, disk/disk' <<< "$stderr"
+	[[ $stderr =~ demshot:\ cost:\ .*energy_error=([0-9.e+-]+) ]]
+	awk -v e="${BASH_REMATCH[1]}" 'BEGIN { exit !(e < 1e-4) }'
+	[ -s "$T/pot.state" ]
+}
+
 @test "twod: an axisymmetric block under a sphere on the axis runs; a shot off the axis is refused" {
 	run --separate-stderr demshot -s "$T/axisym.yaml" -o "$T/a.state" "$T/shot.txt"
 	echo "$stderr"
@@ -99,7 +110,7 @@ TXT
 	bad 's/mode: plane/mode: planar/' 'bad.yaml:9:9: block.mode: expected one of plane, axisym'
 	bad 's/^run:/block2:/' "bad.yaml:16:1: unknown section 'block2'"
 	bad '$a load:\n  pressure: 1 GPa' 'load: a 2D block (dim: 2) takes shots only'
-	bad '$a contact:\n  partial: volume' 'contact.partial: expected one of area, width'
+	bad '$a contact:\n  partial: volume' 'contact.partial: expected one of area, width, potential'
 	bad 's/fine: 1.5 mm/fine: 5 mm/' 'block.fine: the fine region'
 }
 

@@ -23,7 +23,9 @@
  * impact speed to rounding.  Coulomb's law for an impact sliding
  * throughout (a solid disk: 3 mu (1 + e) v_n < v_t): J_t = mu J_n.  Statics
  * of a pair: force and moment of the disk's force at P and of the node
- * forces cancel about any point.
+ * forces cancel about any point.  The potential scheme: its forces against
+ * central differences of its energy, and its energy over a straight row
+ * of segments against the law's, U(delta) = k_n delta^(m+1) / (m+1).
  *
  * Data: the Ch. 7.4 case (thesis-data.yaml, shot_peening_2d): disk R 20
  * mm at 12.2 m/s, E 210 GPa, nu 0.3; alpha in {0.5, 1, 2.5, 5, 10}; the
@@ -270,6 +272,10 @@ static void test_segment_geom(void **state)
 /* ---- pairs -------------------------------------------------------------- */
 
 /* A tiny LCG: reproducible scatter without the library's rng. */
+/* The three 2D partial schemes by number: 0 area, 1 width, 2 potential. */
+#define SCHEME(i) ((i) == 0 ? DEM_PARTIAL_AREA : (i) == 1 ? DEM_PARTIAL_WIDTH : DEM_PARTIAL_POTENTIAL)
+#define SCHEME_NAME(i) ((i) == 0 ? "area" : (i) == 1 ? "width" : "potential")
+
 static double lcg(unsigned long *s)
 {
 	*s = *s * 6364136223846793005UL + 1442695040888963407UL;
@@ -284,9 +290,9 @@ static void test_equilibrium(void **state)
 	(void)state;
 	unsigned long seed = 12345;
 	int partial = 0, full = 0;
-	for (int sch = 0; sch < 2; sch++) {
+	for (int sch = 0; sch < 3; sch++) {
 		dem_contact_param_t p = { .damping = DEM_DAMP_VISCOUS, .xi = 0.3, .friction = 1, .mu = 0.3,
-		                          .partial = sch ? DEM_PARTIAL_WIDTH : DEM_PARTIAL_AREA };
+		                          .partial = SCHEME(sch) };
 		law2(&p.law, 2.5, 1.5);
 		dem_contact_model_t cm;
 		model(&cm, &p);
@@ -325,8 +331,12 @@ static void test_equilibrium(void **state)
 			double M = sp.x[0] * F[1] - sp.x[1] * F[0] + o.c.T[2];
 			for (int a = 0; a < 2; a++)
 				M += X[a][0] * o.Fnode[a][1] - X[a][1] * o.Fnode[a][0];
+			Fs = fmax(Fs, fabs(o.c.Fe));
 			worstF = fmax(worstF, hypot(sF[0], sF[1]) / Fs);
 			worstM = fmax(worstM, fabs(M) / (Fs * R_DISK));
+			/* rounding, of the elastic force too: the potential
+			 * scheme's node forces are sums of elastic terms, which
+			 * damping may nearly cancel in F */
 			assert_true(hypot(sF[0], sF[1]) <= 1e-14 * Fs);
 			assert_true(fabs(M) <= 1e-12 * Fs * R_DISK);
 			/* Coulomb */
@@ -334,17 +344,130 @@ static void test_equilibrium(void **state)
 			/* the point of action on the segment */
 			assert_true(o.g.xi >= -1e-9 && o.g.xi <= 1 + 1e-9);
 		}
-		print_message("equilibrium, %s scheme: |sum F| / |F| up to %.1e, |sum M| / (|F| R) up to %.1e "
-		              "(%d full, %d partial contacts so far)\n", sch ? "width" : "area", worstF, worstM, full, partial);
+		print_message("equilibrium, %s scheme: |sum F| / max(|F|, F_e) up to %.1e, |sum M| / (.. R) up to %.1e "
+		              "(%d full, %d partial contacts so far)\n", SCHEME_NAME(sch), worstF, worstM, full, partial);
 	}
 	assert_true(partial > 200 && full > 200);
+}
+
+/* ---- the potential scheme ------------------------------------------------ */
+
+#define NROW 64  /* segments in a row (test_potential_flat, row_force) */
+
+/* The potential scheme's forces against the central differences of its
+ * energy, relative to the branch's full contact force: its integrals are
+ * quadratures along the chords (facet.c, which meets 1e-6 in 3D), the
+ * forces' and the energy's two different ones, so they agree to the
+ * quadrature's error, not to rounding. */
+#define POT_TOL 1e-5
+
+/* The energy of the pair (O, R; A -> B) on the branch F = bc (g - g0)^m,
+ * with the forces when F, Fnode are not NULL; 0 and no forces out of
+ * contact.  Returns the contact's state: 0 none, 1 partial, 2 full. */
+static int pot_pair(const double O[2], double R, const double A[2], const double B[2], double m,
+                    double bc, double bg0, double *Phi, double F[2], double Fnode[2][2])
+{
+	dem_seg_geom_t g;
+	double Fd[2], Fn[2][2];
+	*Phi = 0;
+	if (!dem_segment_geom(O, R, A, B, DEM_PARTIAL_POTENTIAL, &g))
+		return 0;
+	double x = g.delta - bg0, f = x > 0 ? g.gamma * bc * pow(x, m) : 0;
+	dem_contact_out_t o = { .F = { f * g.n[0], f * g.n[1], 0 }, .Fe = f, .bc = bc, .bg0 = bg0 };
+	dem_segment_forces(&g, &o, m, F ? F : Fd, Fnode ? Fnode : Fn, Phi);
+	return g.full ? 2 : 1;
+}
+
+/* Forces = minus the gradient of the energy, by central differences in
+ * the disk's position and both nodes', over random pairs (segments of any
+ * direction and length 0.3-3 mm, partial and full contacts), the laws
+ * m = 1, 1.5, 2 on loading and on an unloading branch (g0 = 0.4 delta). */
+static void test_potential_gradient(void **state)
+{
+	(void)state;
+	unsigned long seed = 777;
+	const double ms[3] = { 1, 1.5, 2 };
+	int partial = 0, full = 0;
+	double worst = 0, worst_sum = 0, worst_mom = 0;
+	for (int it = 0; it < 3000; it++) {
+		double m = ms[it % 3], kn = 1e11;
+		double th = 2 * DEM_PI * lcg(&seed), L = (0.3 + 2.7 * lcg(&seed)) * 1e-3;
+		double X[2][2] = { { 0.01 * lcg(&seed), 0.01 * lcg(&seed) }, { 0, 0 } };
+		X[1][0] = X[0][0] + L * cos(th), X[1][1] = X[0][1] + L * sin(th);
+		double delta = R_DISK * 0.002 * lcg(&seed), sc = (-0.5 + 2 * lcg(&seed)) * L;
+		double O[2] = { X[0][0] + sc * cos(th) - (R_DISK - delta) * sin(th),
+		                X[0][1] + sc * sin(th) + (R_DISK - delta) * cos(th) };
+		int unload = (it / 3) % 2;
+		double bg0 = unload ? 0.4 * delta : 0, bc = unload ? kn / pow(0.6, m) : kn;
+		double Phi, F[2], Fnode[2][2];
+		int c = pot_pair(O, R_DISK, X[0], X[1], m, bc, bg0, &Phi, F, Fnode);
+		if (!c)
+			continue;
+		c == 1 ? partial++ : full++;
+		double Ffull = bc * pow(delta - bg0, m), h = 1e-4 * delta;
+		/* unknowns: O, A, B; forces F, Fnode[0], Fnode[1] */
+		double *pos[3] = { O, X[0], X[1] }, *frc[3] = { F, Fnode[0], Fnode[1] };
+		for (int a = 0; a < 3; a++)
+			for (int i = 0; i < 2; i++) {
+				double keep = pos[a][i], Pp, Pm;
+				pos[a][i] = keep + h;
+				pot_pair(O, R_DISK, X[0], X[1], m, bc, bg0, &Pp, NULL, NULL);
+				pos[a][i] = keep - h;
+				pot_pair(O, R_DISK, X[0], X[1], m, bc, bg0, &Pm, NULL, NULL);
+				pos[a][i] = keep;
+				double err = fabs(frc[a][i] + (Pp - Pm) / (2 * h)) / Ffull;
+				worst = fmax(worst, err);
+				assert_true(err < POT_TOL);
+			}
+		/* the three forces sum to zero, with zero moment */
+		double sx = F[0] + Fnode[0][0] + Fnode[1][0], sy = F[1] + Fnode[0][1] + Fnode[1][1];
+		double M = O[0] * F[1] - O[1] * F[0];
+		for (int a = 0; a < 2; a++)
+			M += X[a][0] * Fnode[a][1] - X[a][1] * Fnode[a][0];
+		worst_sum = fmax(worst_sum, hypot(sx, sy) / Ffull);
+		worst_mom = fmax(worst_mom, fabs(M) / (Ffull * R_DISK));
+		assert_true(hypot(sx, sy) <= 1e-12 * Ffull);
+		assert_true(fabs(M) <= 1e-10 * Ffull * R_DISK);
+	}
+	print_message("potential: %d partial, %d full contacts; force + FD gradient <= %.2g F_full, "
+	              "sum <= %.2g F_full, moment <= %.2g F_full R\n", partial, full, worst, worst_sum, worst_mom);
+	assert_true(partial > 300 && full > 200);
+}
+
+/* A long flat of many segments (lengths b/2 and 10 b) under the disk at
+ * rest, its centre anywhere along it: the segments' energies add up to the
+ * law's, U(delta) = k_n delta^(m+1) / (m+1) (their sum is int w2 dx over
+ * the line, whatever the joints), and the force is the law's (the gradient
+ * of that sum: see test_joint_crossing). */
+static void test_potential_flat(void **state)
+{
+	(void)state;
+	const double ms[3] = { 1, 1.5, 2 }, eds[2] = { 1e-3, 1e-2 }, kn = 1e11;
+	double worst = 0;
+	for (int j = 0; j < 3; j++)
+		for (int q = 0; q < 2; q++)
+			for (int mesh = 0; mesh < 2; mesh++) {
+				double delta = eds[q] * R_DISK, b = sqrt(delta * (2 * R_DISK - delta));
+				double h = mesh ? 0.5 * b : 10 * b, U = kn * pow(delta, ms[j] + 1) / (ms[j] + 1);
+				for (int i = 0; i <= 200; i++) {
+					double O[2] = { -2 * b + 4 * b * i / 200.0, R_DISK - delta }, sum = 0;
+					for (int s = 0; s < NROW; s++) {
+						double A[2] = { (s - NROW / 2) * h, 0 }, B[2] = { A[0] + h, 0 }, Phi;
+						pot_pair(O, R_DISK, A, B, ms[j], kn, 0, &Phi, NULL, NULL);
+						sum += Phi;
+					}
+					worst = fmax(worst, fabs(sum / U - 1));
+				}
+			}
+	print_message("potential on a flat of segments: sum of the energies / U(delta) - 1 up to %.2e\n", worst);
+	/* the quadrature's error, as in the forces */
+	assert_true(worst < POT_TOL);
 }
 
 /* The force on a disk of the Ch. 7.4 size held at overlap delta over a row
  * of collinear segments of length h, its centre at x: the sum over the
  * segments it meets.  scheme < 0: the naive scheme, each segment's nearest
  * point with the full law (delta_i = R - |O - q_i|, no factor). */
-#define NROW 64
 static void row_force(const dem_contact_model_t *cm, double x, double delta, double h, int scheme,
                       double F[2])
 {
@@ -362,7 +485,11 @@ static void row_force(const dem_contact_model_t *cm, double x, double delta, dou
 		if (!dem_segment_geom(O, R_DISK, A, B, scheme, &g))
 			continue;
 		double f = g.gamma * dem_law_force(&cm->p.law, kn, g.delta);
-		F[0] += f * g.n[0], F[1] += f * g.n[1];
+		/* the kernel's elastic output on loading (model.h: bc = k_n, bg0 = 0) */
+		dem_contact_out_t o = { .F = { f * g.n[0], f * g.n[1], 0 }, .Fe = f, .bc = kn };
+		double Fd[2], Fnode[2][2];
+		dem_segment_forces(&g, &o, cm->m, Fd, Fnode, NULL);
+		F[0] += Fd[0], F[1] += Fd[1];
 	}
 }
 
@@ -384,9 +511,10 @@ static void test_joint_crossing(void **state)
 			double delta = eds[q] * R_DISK, b = sqrt(delta * (2 * R_DISK - delta));
 			double Ffull = dem_law_force(&p.law, dem_law_kn(&p.law, R_DISK), delta);
 			for (int mesh = 0; mesh < 2; mesh++) {
-				double h = mesh ? 0.5 * b : 10 * b, dev[3] = { 0, 0, 0 }, jump[3] = { 0, 0, 0 }, side[3] = { 0, 0, 0 };
-				for (int sc = 0; sc < 3; sc++) {
-					int scheme = sc == 0 ? DEM_PARTIAL_AREA : sc == 1 ? DEM_PARTIAL_WIDTH : -1;
+				double h = mesh ? 0.5 * b : 10 * b, dev[4] = { 0 }, jump[4] = { 0 }, side[4] = { 0 };
+				for (int sc = 0; sc < 4; sc++) {
+					int scheme = sc == 0 ? DEM_PARTIAL_AREA : sc == 1 ? DEM_PARTIAL_WIDTH :
+					             sc == 3 ? DEM_PARTIAL_POTENTIAL : -1;
 					double prev = -1;
 					/* across the joint at x = 0 (and those within 2b of it) */
 					for (int i = 0; i <= 4000; i++) {
@@ -404,8 +532,12 @@ static void test_joint_crossing(void **state)
 				              "%.2e width, %.2f naive; side force %.1e, %.1e, %.2f; largest step-to-step change "
 				              "%.1e, %.1e, %.2f\n", ms[j], eds[q], mesh ? "b/2" : "10b", dev[0], dev[1], dev[2],
 				              side[0], side[1], side[2], jump[0], jump[1], jump[2]);
+				print_message("  potential scheme: |F|/F_full - 1 up to %.2e, side force %.1e\n", dev[3], side[3]);
 				assert_true(dev[0] < 0.05 && dev[1] < 0.05);
 				assert_true(side[0] < 0.05 && side[1] < 0.05);
+				/* the potential scheme: the law itself, to its quadrature
+				 * (test_potential_gradient's tolerance) */
+				assert_true(dev[3] < POT_TOL && side[3] < POT_TOL);
 				/* the naive scheme does see the joint */
 				assert_true(dev[2] > 0.2);
 			}
@@ -644,8 +776,8 @@ static void test_rolling_joint(void **state)
 	const double delta = 1e-3 * R_DISK, b = sqrt(delta * (2 * R_DISK - delta)), vx = 1.0, mu = 0.3;
 	const double X1[2][2] = { { -20 * b, 0 }, { 0, 0 } }, X2[2][2] = { { 0, 0 }, { 20 * b, 0 } };
 	for (int roll = 0; roll < 2; roll++)
-		for (int sch = 0; sch < 2; sch++) {
-			dem_contact_param_t p = { .friction = 1, .mu = mu, .partial = sch ? DEM_PARTIAL_WIDTH : DEM_PARTIAL_AREA };
+		for (int sch = 0; sch < 3; sch++) {
+			dem_contact_param_t p = { .friction = 1, .mu = mu, .partial = SCHEME(sch) };
 			law2(&p.law, 2.5, 1.5);
 			dem_contact_model_t cm;
 			model(&cm, &p);
@@ -678,7 +810,7 @@ static void test_rolling_joint(void **state)
 			}
 			print_message("%s across a joint, %s scheme, mu %.1f: F_n off by up to %.2e, F_t by %.2e of F_n; "
 			              "step-to-step %.1e, %.1e; |F_t|/(mu F_n) up to %.4f\n", roll ? "rolling" : "sliding",
-			              sch ? "width" : "area", mu, devn, devt, jumpn, jumpt, ftmax);
+			              SCHEME_NAME(sch), mu, devn, devt, jumpn, jumpt, ftmax);
 			assert_true(devn < 0.05 && devt < 0.05);
 			assert_true(ftmax <= 1 + 1e-12);
 		}
@@ -773,6 +905,8 @@ int main(void)
 		cmocka_unit_test(test_winkler2d),
 		cmocka_unit_test(test_segment_geom),
 		cmocka_unit_test(test_equilibrium),
+		cmocka_unit_test(test_potential_gradient),
+		cmocka_unit_test(test_potential_flat),
 		cmocka_unit_test(test_joint_crossing),
 		cmocka_unit_test(test_box31_2d),
 		cmocka_unit_test(test_alpha_range),
