@@ -162,21 +162,6 @@ static int read_scene(dem_scene_t *s, struct settings *st, dem_error_t *e)
 	return dem_scene_check(s, sections, e);
 }
 
-/* Whether the stream is of an axisymmetric block: demshot's header line
- * "# twod mode=axisym" (a 3D stream has no twod line, a plane-strain one
- * mode=plane). */
-static int is_axisym(const dem_header_t *h)
-{
-	const char *v = dem_header_get(h, "twod");
-	size_t n = strlen("mode=axisym");
-
-	for (const char *p = v; p && *p; p++)
-		if ((p == v || p[-1] == ' ') && strncmp(p, "mode=axisym", n) == 0 &&
-		    (p[n] == '\0' || p[n] == ' '))
-			return 1;
-	return 0;
-}
-
 /* The region: the area (scene, else the stream's "# area", else the whole
  * top face) less the margin.  *from says which. */
 static int find_region(const struct settings *st, dem_state_reader_t *r,
@@ -220,7 +205,8 @@ static int find_region(const struct settings *st, dem_state_reader_t *r,
 	}
 	o->threshold = st->threshold;
 	o->ep_threshold = st->ep_threshold;
-	o->axisym = is_axisym(dem_state_header(r));
+	/* an axisymmetric block's stream (demshot: "# twod mode=axisym") */
+	o->axisym = dem_header_has_word(dem_state_header(r), "twod", "mode=axisym");
 	o->bin = st->bin_size;
 	if (st->bins > 0) {
 		double zlo = HUGE_VAL, zhi = -HUGE_VAL;

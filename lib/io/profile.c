@@ -186,9 +186,7 @@ static int read_profiles(const char *path, int want, dem_profile_t *one,
 		memset(one, 0, sizeof *one);
 	if ((rc = dem_reader_open(&rd, path, e)) || (rc = find_cols(rd, &c, e)))
 		goto out;
-	const char *twod = dem_header_get(dem_reader_header(rd), "twod");
-	int plane = twod && strncmp(twod, "mode=plane", 10) == 0 &&
-		    (twod[10] == 0 || twod[10] == ' ');
+	int plane = dem_header_has_word(dem_reader_header(rd), "twod", "mode=plane");
 	for (;;) {
 		got = dem_reader_next(rd, v, e);
 		if (got < 0) {

@@ -160,6 +160,17 @@ const char *dem_header_get(const dem_header_t *h, const char *key)
 	return NULL;
 }
 
+int dem_header_has_word(const dem_header_t *h, const char *key, const char *word)
+{
+	const char *v = dem_header_get(h, key);
+	size_t n = strlen(word);
+
+	for (const char *p = v; p && *p; p++)
+		if ((p == v || p[-1] == ' ') && strncmp(p, word, n) == 0 && (p[n] == '\0' || p[n] == ' '))
+			return 1;
+	return 0;
+}
+
 int dem_header_copy_lines(dem_header_t *dst, const dem_header_t *src)
 {
 	for (size_t i = 0; i < src->nline; i++)

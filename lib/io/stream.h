@@ -76,6 +76,9 @@ int dem_header_set(dem_header_t *h, const char *key, const char *fmt, ...)
 	__attribute__((format(printf, 3, 4)));
 /* Value of the first line with key, or NULL. */
 const char *dem_header_get(const dem_header_t *h, const char *key);
+/* Whether the first line with key holds word as one of its blank-separated
+ * words (e.g. key "twod", word "mode=axisym"); 0 when there is no such line. */
+int dem_header_has_word(const dem_header_t *h, const char *key, const char *word);
 /* Copy every metadata line of src (provenance and the rest) into dst. */
 int dem_header_copy_lines(dem_header_t *dst, const dem_header_t *src);
 /* Append this program's provenance line: name, version, seed (if has_seed)
