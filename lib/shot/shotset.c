@@ -861,13 +861,12 @@ int dem_shotset_hook(void *ctx, double t, double dt, const double *x, const doub
 
 /* ---- queries ------------------------------------------------------------ */
 
-
 /* Whether the straight path of shot b (no contact: it flies freely) never
- * meets the box lo..hi enlarged by its radius. */
-static int path_misses(const dem_shot_body_t *b, const double lo[3], const double hi[3])
+ * meets the box lo..hi enlarged by its radius, in dim dimensions. */
+static int path_misses(const dem_shot_body_t *b, int dim, const double *lo, const double *hi)
 {
 	double t0 = 0, t1 = HUGE_VAL;
-	for (int i = 0; i < 3; i++) {
+	for (int i = 0; i < dim; i++) {
 		double a = lo[i] - b->R, c = hi[i] + b->R, x = b->x[i], v = b->v[i];
 		if (v == 0) {
 			if (x < a || x > c)
@@ -881,16 +880,15 @@ static int path_misses(const dem_shot_body_t *b, const double lo[3], const doubl
 	return t0 > t1;
 }
 
-size_t dem_shotset_holding(const dem_shotset_t *S, size_t *touching, size_t *coming)
+size_t dem_shot_holding(const dem_shot_body_t *b, size_t n, int dim, const double *lo,
+			const double *hi, size_t *touching, size_t *coming)
 {
-	const double *lo = S->built ? S->at_lo : S->ref_lo, *hi = S->built ? S->at_hi : S->ref_hi;
 	size_t nt = 0, nc = 0;
 
-	for (size_t s = 0; s < S->ns; s++) {
-		const dem_shot_body_t *b = &S->b[s];
-		if (b->contacts > 0)
+	for (size_t s = 0; s < n; s++) {
+		if (b[s].contacts > 0)
 			nt++;
-		else if (!(b->v[2] > 0) && !path_misses(b, lo, hi))
+		else if (!(b[s].v[dim - 1] > 0) && !path_misses(&b[s], dim, lo, hi))
 			nc++;
 	}
 	if (touching)
@@ -898,6 +896,12 @@ size_t dem_shotset_holding(const dem_shotset_t *S, size_t *touching, size_t *com
 	if (coming)
 		*coming = nc;
 	return nt + nc;
+}
+
+size_t dem_shotset_holding(const dem_shotset_t *S, size_t *touching, size_t *coming)
+{
+	return dem_shot_holding(S->b, S->ns, 3, S->built ? S->at_lo : S->ref_lo,
+				S->built ? S->at_hi : S->ref_hi, touching, coming);
 }
 
 int dem_shotset_done(const dem_shotset_t *S)

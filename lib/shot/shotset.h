@@ -93,6 +93,14 @@ typedef struct dem_shot_body {
 	int contacts;             /* facets and shots touching at the last step */
 } dem_shot_body_t;
 
+/* Of the n shots b in DIM dimensions (2: x and y up; 3: x, y and z up),
+ * those that keep a pass going: touching at the last step (*touching) and
+ * those out of contact not moving up on a straight path that meets the box
+ * lo..hi of the block's top surface grown by their radius (*coming); the
+ * pointers may be NULL.  Shared by the 3D and 2D shot sets. */
+size_t dem_shot_holding(const dem_shot_body_t *b, size_t n, int dim, const double *lo,
+			const double *hi, size_t *touching, size_t *coming);
+
 typedef struct dem_shotset_stats {
 	long steps;               /* hook calls */
 	long rebuilds;            /* candidate lists built */

@@ -569,40 +569,9 @@ int dem_shotset2d_drive(dem_shotset2d_t *S, size_t i, const double x[2], const d
 
 /* ---- queries ------------------------------------------------------------ */
 
-/* Whether the straight path of shot b never meets the box lo..hi grown by
- * its radius. */
-static int path_misses(const dem_shot_body_t *b, const double lo[2], const double hi[2])
-{
-	double t0 = 0, t1 = HUGE_VAL;
-	for (int i = 0; i < 2; i++) {
-		double a = lo[i] - b->R, c = hi[i] + b->R, x = b->x[i], v = b->v[i];
-		if (v == 0) {
-			if (x < a || x > c)
-				return 1;
-			continue;
-		}
-		double ta = (a - x) / v, tc = (c - x) / v;
-		t0 = fmax(t0, fmin(ta, tc));
-		t1 = fmin(t1, fmax(ta, tc));
-	}
-	return t0 > t1;
-}
-
 size_t dem_shotset2d_holding(const dem_shotset2d_t *S, size_t *touching, size_t *coming)
 {
-	size_t nt = 0, nc = 0;
-	for (size_t s = 0; s < S->ns; s++) {
-		const dem_shot_body_t *b = &S->b[s];
-		if (b->contacts > 0)
-			nt++;
-		else if (!(b->v[1] > 0) && !path_misses(b, S->lo, S->hi))
-			nc++;
-	}
-	if (touching)
-		*touching = nt;
-	if (coming)
-		*coming = nc;
-	return nt + nc;
+	return dem_shot_holding(S->b, S->ns, 2, S->lo, S->hi, touching, coming);
 }
 
 int dem_shotset2d_done(const dem_shotset2d_t *S)
