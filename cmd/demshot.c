@@ -1398,7 +1398,10 @@ static int build(const struct cmdline *cl, struct job *j, double t0, dem_cost_t 
 	if (st->dim == 3 && st->have_shots) {
 		if ((rc = dem_shotset_create(&j->b.S, &st->mesh, dem_fe_mass(j->b.fe), &st->cm, &st->so, e)))
 			return rc;
+		size_t n0, n1;
 		dem_fe_set_load(j->b.fe, dem_shotset_hook, j->b.S);
+		dem_shotset_nodes(j->b.S, &n0, &n1);
+		dem_fe_set_load_nodes(j->b.fe, n0, n1);
 	}
 	if (fields_alloc(&j->f, st))
 		return dem_error_nomem(e, "fields");
