@@ -241,11 +241,13 @@ static int read_shots(dem_scene_t *s, int accuracy, struct settings *st, dem_err
 {
 	static const char *const laws[] = {"power", "hertz", NULL};
 	static const char *const partials[] = {"potential", "area", "volume", NULL};
-	/* 2D: the overlap area or contact width factor of disk.h (Eqs. 3.10,
-	 * 3.11), or its potential scheme; axisymmetric: the ring's surface
+	/* 2D plane strain: disk.h's potential scheme (the default, as in 3D:
+	 * the only one of the three whose forces conserve energy, issue 18,
+	 * tests/unit/test_shot_impact2d.c), or the overlap area or contact
+	 * width factor (Eqs. 3.10, 3.11); axisymmetric: the ring's surface
 	 * (shotset2d.h), not chosen */
-	static const char *const partials2[] = {"area", "width", "potential", NULL};
-	static const int partial2_ids[] = {DEM_PARTIAL_AREA, DEM_PARTIAL_WIDTH, DEM_PARTIAL_POTENTIAL};
+	static const char *const partials2[] = {"potential", "area", "width", NULL};
+	static const int partial2_ids[] = {DEM_PARTIAL_POTENTIAL, DEM_PARTIAL_AREA, DEM_PARTIAL_WIDTH};
 	static const char *const models[] = {"rigid", "fe", NULL};
 	const int plane2 = st->dim == 2 && !st->axisym;
 	dem_contact_param_t p = {0};
