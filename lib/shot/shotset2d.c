@@ -268,14 +268,65 @@ static int ring_geom(const double O[2], double R, const double A[2], const doubl
 	return 1;
 }
 
-/* Distance from O to the segment A B. */
-static double seg_dist(const double O[2], const double A[2], const double B[2])
+/* Distance from O to the segment A B, and the unit direction from O to
+ * the segment's nearest point in u (NULL: not wanted; 0 0 at distance 0). */
+static double seg_dist(const double O[2], const double A[2], const double B[2], double u[2])
 {
 	double ab[2] = { B[0] - A[0], B[1] - A[1] }, ao[2] = { O[0] - A[0], O[1] - A[1] };
 	double l2 = ab[0] * ab[0] + ab[1] * ab[1];
 	double s = l2 > 0 ? (ao[0] * ab[0] + ao[1] * ab[1]) / l2 : 0;
 	s = s < 0 ? 0 : s > 1 ? 1 : s;
-	return hypot(ao[0] - s * ab[0], ao[1] - s * ab[1]);
+	double q[2] = { s * ab[0] - ao[0], s * ab[1] - ao[1] }, l = hypot(q[0], q[1]);
+	if (u)
+		u[0] = l > 0 ? q[0] / l : 0, u[1] = l > 0 ? q[1] / l : 0;
+	return l;
+}
+
+/* AXISYM: the step limit of the ring of segment k (A B) that does not
+ * touch sphere b yet, at distance gap (u: the unit direction from the
+ * sphere's centre to the segment's nearest point), but may within a step
+ * dt at the approach speed vrel.  A ring's force gamma k_n delta^m is no
+ * power law of the overlap: a ring first touched inside its segment (a
+ * dent's flank, the chord's end) has gamma = 2 int r dx / b^2 about
+ * 4 r / b, b = sqrt(2 R delta), so its force grows as delta^(m - 1/2):
+ * for the linear law as sqrt(delta), from zero at a slope without bound
+ * (for m 1.5 linearly).  The first step's overlap is then no small part
+ * of the contact, and the limit at gamma 1 that the law gives before
+ * contact lets the step's own overlap store energy the pair never paid
+ * for (issue 18: a light ring near the axis bouncing off the sphere).
+ * The limit of Box 3.1 with the pair's secant over the overlap delta1 =
+ * vrel dt - gap that one step can make (the ring's force from 0 to delta1
+ * over delta1: gamma(delta1) times the law's secant, as shot_geometry
+ * takes it once they touch), for the pair and for its two nodes as
+ * nodes_dt; a smaller step makes a smaller delta1 and a larger gamma, so
+ * it is taken again down to a step that holds (dt returned as is when
+ * it does). */
+static double ring_approach_dt(const dem_shotset2d_t *S, const dem_shot_body_t *b, size_t k,
+			       const double *x, double vrel, double gap, const double u[2], double dt)
+{
+	const uint32_t *sn = S->seg + 2 * k;
+	const double *A = x + 2 * (size_t)sn[0], *B = x + 2 * (size_t)sn[1];
+	if (!(gap > 0))
+		return dt;
+	for (int it = 0; it < 64; it++) {
+		double d1 = vrel * dt - gap;
+		if (!(d1 > 0))
+			return dt;
+		/* the sphere moved toward the segment's nearest point to overlap d1 */
+		double O1[2] = { b->x[0] + (gap + d1) * u[0], b->x[1] + (gap + d1) * u[1] };
+		dem_seg_geom_t g;
+		if (!ring_geom(O1, b->R, A, B, &g))
+			return dt;
+		double mass = dem_contact_meff(b->M, S->smass[k]) / g.gamma;
+		double K = dem_contact_secant(&S->cm, b->kn, mass, 0, vrel);
+		double dtn = dem_dt_step(S->o.lambda, mass, K);
+		dtn = fmin(dtn, dem_dt_step(S->o.lambda, S->node_mass[sn[0]], g.gamma * K * (1 - g.xi)));
+		dtn = fmin(dtn, dem_dt_step(S->o.lambda, S->node_mass[sn[1]], g.gamma * K * g.xi));
+		if (dtn >= dt)
+			return dt;
+		dt = dtn;
+	}
+	return dt;
 }
 
 /* Geometry of shot s against every segment at x, and its step limit. */
@@ -284,7 +335,7 @@ static void shot_geometry(dem_shotset2d_t *S, size_t s, const double *x, const d
 {
 	dem_shot_body_t *b = &S->b[s];
 	double R = b->R, sp = hypot(b->v[0], b->v[1]), reach = 2 * sp * dt_max;
-	double dtmin = HUGE_VAL, mnear = HUGE_VAL;
+	double dtmin = HUGE_VAL, mnear = HUGE_VAL, dtnear = dt_max;
 	int nc = 0;
 
 	for (size_t k = 0; k < S->nseg; k++) {
@@ -306,9 +357,11 @@ static void shot_geometry(dem_shotset2d_t *S, size_t s, const double *x, const d
 				       : dem_segment_geom(b->x, R, A, B, S->cm.p.partial, &po->g));
 		if (!touch) {
 			double w = v ? fmax(hypot(v[2 * a], v[2 * a + 1]), hypot(v[2 * c], v[2 * c + 1])) : 0;
-			double gap = seg_dist(b->x, A, B) - R;
+			double u[2], gap = seg_dist(b->x, A, B, u) - R;
 			if (!(gap > 0) || gap < 2 * (sp + w) * dt_max)
 				mnear = fmin(mnear, S->smass[k]);
+			if (S->axisym)
+				dtnear = ring_approach_dt(S, b, k, x, sp + w, gap, u, dtnear);
 			continue;
 		}
 		po->touch = 1;
@@ -321,6 +374,8 @@ static void shot_geometry(dem_shotset2d_t *S, size_t s, const double *x, const d
 	}
 	if (nc == 0 && mnear < HUGE_VAL)
 		dtmin = dem_contact_dt(&S->cm, b->kn, dem_contact_meff(b->M, mnear), 0, sp, S->o.lambda);
+	if (dtnear < dt_max)
+		dtmin = fmin(dtmin, dtnear);
 	b->dt = dtmin;
 }
 

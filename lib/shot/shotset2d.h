@@ -53,7 +53,17 @@
  * times dt) is limited as a contact starting on the lightest such
  * segment; each surface node carrying the stiffness gamma K of its pairs
  * (shared as the force is, (1 - xi) and xi) limits the step to lambda 2
- * sqrt(m / K), as in 3D.
+ * sqrt(m / K), as in 3D.  AXISYM, besides: every ring the shot does not
+ * touch yet but may reach within the step (its gap under the shot's
+ * speed plus the segment's fastest node's, times dt) limits the step as
+ * the pair would once touching, its gamma taken at the overlap delta1
+ * that step would make (the ring's force from 0 to delta1 over delta1:
+ * a ring first touched inside its segment has gamma about 4 r / b, so
+ * its force grows as sqrt(delta1), and the first step's overlap must be
+ * small for that pair, not for a gamma of 1); a smaller step makes a
+ * smaller delta1 and a stiffer secant, so the limit is taken again until
+ * the step holds (issue 18: without it the linear law's light rings near
+ * the axis bounce off the sphere and gain energy).
  *
  * A pass is over (dem_shotset2d_done) when no shot touches the block and
  * every shot moves up or on a straight path that misses the box of the
