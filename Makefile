@@ -4,6 +4,9 @@
 #   make check      build and run every test; ends with "N passed, N failed"
 #   make check SANITIZE=1   the same under AddressSanitizer and UBSan
 #   make check CC=clang     the same built by clang (in build/rel-clang)
+#   make MPI=1      the programs on MPI (mpicc, -DDEM_MPI; in build/rel-mpi,
+#                   lib/par/par_mpi.c for lib/par/par.c); make check runs
+#                   the MPI tests too when mpicc is installed (tests/mpi)
 #   make demo       set up and run the main job on a bundled scene
 #   make deps       install the Debian packages the build needs (as root)
 #   make install    install under PREFIX (/usr/local); DESTDIR stages it
@@ -53,20 +56,26 @@ endif
 ifneq ($(COMPILER),)
 BUILD    := $(BUILD)-$(COMPILER)
 endif
+# MPI=1: the build on MPI beside the others (explicit.h, "Ranks")
+MPI_ON   := $(filter 1,$(MPI))
+ifeq ($(MPI_ON),1)
+CC       := mpicc
+BUILD    := $(BUILD)-mpi
+endif
 ifeq ($(COMPILER),clang)
 # valgrind 3.19 (Debian 12) does not read clang's default DWARF 5
 OPT      += -gdwarf-4
 endif
 
 DEM_CFLAGS := -std=c11 -Wall -Wextra -Werror $(OPT) -D_POSIX_C_SOURCE=200809L \
-            -DDEM_VERSION='"$(VERSION)"' -Ilib -fopenmp \
+            -DDEM_VERSION='"$(VERSION)"' -Ilib -fopenmp $(if $(MPI_ON),-DDEM_MPI) \
             $(shell pkg-config --cflags $(PKGS) 2>/dev/null) -I/usr/include/suitesparse
 ALL_CFLAGS = $(DEM_CFLAGS) $(CPPFLAGS) $(CFLAGS)
 # CHOLMOD (SuiteSparse) has no pkg-config file on Debian 12
 LDLIBS   := $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lcholmod -lm
 ALL_LDFLAGS = $(filter -fsanitize% -fno-sanitize%,$(OPT)) -fopenmp $(LDFLAGS)
 
-LIB_SRC  := $(sort $(wildcard lib/*/*.c))
+LIB_SRC  := $(filter-out $(if $(MPI_ON),lib/par/par.c,lib/par/par_mpi.c),$(sort $(wildcard lib/*/*.c)))
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
 CMD_SRC  := $(sort $(wildcard cmd/*.c))
 PROGS    := $(CMD_SRC:cmd/%.c=$(BUILD)/bin/%)
@@ -78,7 +87,7 @@ FUZZER   := $(BUILD)/tests/fuzz-readers
 # bash completion, made from each program's --help (tools/completion.sh)
 COMPLETIONS := $(PROGS:$(BUILD)/bin/%=$(BUILD)/completion/%)
 
-ifneq ($(SAN)$(COMPILER),)
+ifneq ($(SAN)$(COMPILER)$(MPI_ON),)
 LIBDEM   := $(BUILD)/lib/libdem.a
 BUILDBIN := $(BUILD)/bin
 else
@@ -119,7 +128,7 @@ $(BUILD)/bin/%: $(BUILD)/cmd/%.o $(LIBDEM)
 	@mkdir -p $(@D)
 	$(CC) $(ALL_LDFLAGS) $< $(LIBDEM) $(LDLIBS) -o $@
 
-ifeq ($(SAN)$(COMPILER),)
+ifeq ($(SAN)$(COMPILER)$(MPI_ON),)
 bin/%: $(BUILD)/bin/%
 	@mkdir -p bin
 	cp $< $@.tmp && mv -f $@.tmp $@
