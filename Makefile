@@ -5,8 +5,9 @@
 #   make check SANITIZE=1   the same under AddressSanitizer and UBSan
 #   make check CC=clang     the same built by clang (in build/rel-clang)
 #   make MPI=1      the programs on MPI (mpicc, -DDEM_MPI; in build/rel-mpi,
-#                   lib/par/par_mpi.c for lib/par/par.c); make check runs
-#                   the MPI tests too when mpicc is installed (tests/mpi)
+#                   lib/par/par_mpi.c for lib/par/par.c); make check builds
+#                   demshot so and runs the MPI tests too when mpicc is
+#                   installed (test_fe_ranks under mpirun, tests/cli/mpi.bats)
 #   make demo       set up and run the main job on a bundled scene
 #   make deps       install the Debian packages the build needs (as root)
 #   make install    install under PREFIX (/usr/local); DESTDIR stages it
@@ -95,7 +96,7 @@ LIBDEM   := lib/libdem.a
 BUILDBIN := bin
 endif
 
-.PHONY: all deps build check test demo clean bench FORCE \
+.PHONY: all deps build check test demo clean bench FORCE mpi-build \
         install uninstall installcheck deb fuzz
 .SUFFIXES:
 .SECONDARY:
@@ -167,10 +168,22 @@ CHECK_JOBS = $(shell nproc 2>/dev/null || echo 1)
 check: deps
 	@$(MAKE) --no-print-directory $(if $(filter -j%,$(MAKEFLAGS)),,-j$(CHECK_JOBS)) test
 
+# make check also builds demshot and the MPI unit tests on MPI (in
+# build/rel-mpi) and runs them when mpicc is installed (make deps installs
+# OpenMPI): in the plain build only, not under SANITIZE, another CC or MPI=1
+MPICC    := $(if $(SAN)$(COMPILER)$(MPI_ON),,$(shell command -v mpicc 2>/dev/null))
+MPI_DIR  := build/rel-mpi
+MPI_TESTS := test_fe_ranks
+MPI_ENV  = $(if $(MPICC),DEM_TEST_MPIBIN="$(abspath $(MPI_DIR)/bin)" \
+             DEM_TEST_MPITESTS="$(MPI_TESTS:%=$(abspath $(MPI_DIR)/tests)/%)")
+
 # check without make deps (the Debian package build runs this one)
-test: build $(TESTS) $(FUZZER)
-	@$(TEST_ENV) sh tests/run.sh "$(BUILD)/tests" "$(abspath $(BUILDBIN))" "$(SANITIZE)" \
+test: build $(TESTS) $(FUZZER) $(if $(MPICC),mpi-build)
+	@$(TEST_ENV) $(MPI_ENV) sh tests/run.sh "$(BUILD)/tests" "$(abspath $(BUILDBIN))" "$(SANITIZE)" \
 	  tests/cli tests/install/staged.bats
+
+mpi-build:
+	@$(MAKE) --no-print-directory MPI=1 $(MPI_DIR)/bin/demshot $(MPI_TESTS:%=$(MPI_DIR)/tests/%)
 
 demo: deps
 	@$(MAKE) --no-print-directory build
