@@ -251,11 +251,13 @@ static int read_shots(dem_scene_t *s, int accuracy, struct settings *st, dem_err
 {
 	static const char *const laws[] = {"power", "hertz", NULL};
 	static const char *const partials[] = {"potential", "area", "volume", NULL};
-	/* 2D: the overlap area or contact width factor of disk.h (Eqs. 3.10,
-	 * 3.11), or its potential scheme; axisymmetric: the ring's surface
+	/* 2D plane strain: disk.h's potential scheme (the default, as in 3D:
+	 * the only one of the three whose forces conserve energy, issue 18,
+	 * tests/unit/test_shot_impact2d.c), or the overlap area or contact
+	 * width factor (Eqs. 3.10, 3.11); axisymmetric: the ring's surface
 	 * (shotset2d.h), not chosen */
-	static const char *const partials2[] = {"area", "width", "potential", NULL};
-	static const int partial2_ids[] = {DEM_PARTIAL_AREA, DEM_PARTIAL_WIDTH, DEM_PARTIAL_POTENTIAL};
+	static const char *const partials2[] = {"potential", "area", "width", NULL};
+	static const int partial2_ids[] = {DEM_PARTIAL_POTENTIAL, DEM_PARTIAL_AREA, DEM_PARTIAL_WIDTH};
 	static const char *const models[] = {"rigid", "fe", NULL};
 	const int plane2 = st->dim == 2 && !st->axisym;
 	dem_contact_param_t p = {0};
@@ -1470,7 +1472,10 @@ static int build(const struct cmdline *cl, struct job *j, double t0, dem_cost_t 
 	if (st->dim == 3 && st->have_shots) {
 		if ((rc = dem_shotset_create(&j->b.S, &st->mesh, dem_fe_mass(j->b.fe), &st->cm, &st->so, e)))
 			return rc;
+		size_t n0, n1;
 		dem_fe_set_load(j->b.fe, dem_shotset_hook, j->b.S);
+		dem_shotset_nodes(j->b.S, &n0, &n1);
+		dem_fe_set_load_nodes(j->b.fe, n0, n1);
 	}
 	if (fields_alloc(&j->f, st))
 		return dem_error_nomem(e, "fields");

@@ -10,6 +10,11 @@
 # speed-up of the changes that leave the results alone, apart from those
 # that change them (speed-report.sh says which is which).
 #
+# Each run is made at real-time priority (chrt -f 50, when this user may:
+# root) so that other work on the machine waits while it runs, the same
+# for every build; SPEED_RT=0 in the environment runs them at normal
+# priority.  OUT/prio.txt says which.
+#
 # Each revision is built from `git archive REV` into OUT/base-REV (its
 # bin/demshot); nothing of this tree is touched.  Rows into OUT/speed.tsv:
 #   build config run wall_s element_loop_s node_loop_s contact_s steps
@@ -37,6 +42,11 @@ build_rev() {
 	fi
 	echo "$r"
 }
+prio=
+if [ "${SPEED_RT:-1}" != 0 ] && chrt -f 50 true 2> /dev/null; then
+	prio="chrt -f 50"
+fi
+echo "${prio:-normal}" > "$out/prio.txt"
 rev=$(build_rev "$base")
 echo "$rev" > "$out/base.txt"
 rm -f "$out/same.txt" "$out/same-plastic.state"
@@ -65,7 +75,7 @@ while [ "$r" -le "$runs" ]; do
 			esac
 			echo "pass-speed: run $r of $runs: $build $config" >&2
 			load=$(loadavg)
-			"$prog" -s "$out/$config.yaml" --threads 2 -o "$out/$build-$config.state" \
+			$prio "$prog" -s "$out/$config.yaml" --threads 2 -o "$out/$build-$config.state" \
 				"$out/shots.txt" 2> "$out/$build-$config.log"
 			printf '%s\t%s\t%s\t%s\t%s\n' "$build" "$config" "$r" \
 				"$(cost_field "$out/$build-$config.log" wall_s element_loop_s node_loop_s contact_s steps ns_per_elem_cycle)" \

@@ -56,6 +56,14 @@ echo "2 threads), by the demshot of git revision $rev (built from \`git archive\
 echo "run) and by this tree's, one after the other, $runs times; and the same pass on an"
 echo "elastic block (no yield: the elastic cycle). Medians of the $runs runs (range in"
 echo "brackets); the 1-minute load averages at the runs' starts: $loads."
+prio=normal
+[ -r "$out/prio.txt" ] && prio=$(cat "$out/prio.txt")
+if [ "$prio" = normal ]; then
+	echo "The runs were made at normal priority: other work on the machine shares the cores."
+else
+	echo "Each run was made at real-time priority (\`$prio\`), so that other work on the"
+	echo "machine (the load above) waits while it runs, the same for every build."
+fi
 echo
 echo "| build | block | wall s | element loop s | node loop s | contact s | steps | ns per element-cycle |"
 echo "|---|---|---|---|---|---|---|---|"
@@ -86,7 +94,7 @@ awk -v bw="$(med base plastic 4)" -v nw="$(med new plastic 4)" -v bn="$(med base
     -v bs="$(med base plastic 8)" -v ds="$ssig" -v dx="$sother" -v srev="$srev" -v rev="$rev" 'BEGIN {
 	printf "- Against %s, a revision after %s whose pass takes the steps this tree takes\n", srev, rev
 	printf "  (%s against %s: %s changed the step sequence, not only the speed), the changes since that\n", ns, bs, srev
-	printf "  leave the results alone: wall time %.2fx (%.1f s against %.1f s), per element-cycle %.2fx\n", sw / nw, nw, sw, sn / nn
-	printf "  (%.1f ns against %.1f ns); the residual profiles differ by at most %.3g MPa in stress and\n", nn, sn, ds
+	printf "  leave the results alone: wall time %.2fx (%.1f s against %.1f s; 1.3x asked: %s), per\n", sw / nw, nw, sw, (sw / nw >= 1.3 ? "met" : "NOT met")
+	printf "  element-cycle %.2fx (%.1f ns against %.1f ns); the residual profiles differ by at most %.3g MPa in stress and\n", sn / nn, nn, sn, ds
 	printf "  %.3g in strain (asked: 0.1 MPa, %s).\n", dx, (ds <= 0.1 ? "met" : "NOT met")
 }'

@@ -31,10 +31,14 @@ set -- de $(for h in "$@"; do printf 'fe-%s ' "$h"; done)
 read -r dpk ddp <<EOT
 $(peak de)
 EOT
+# the DE disk's partial contact scheme, as its log names it (the scene
+# takes demshot's default)
+scheme=$(sed -n 's/^demshot: effects: .*, partial \([a-z]*\),.*/\1/p' "$out/de.log" | head -n 1)
 echo "## The FE shot against the rigid DE disk (make fe-shot)"
 echo
 echo "Ch. 7.4's comparison: the DE disk (law m = 1.5, alpha 2.5 in the"
-echo "thesis's sense) and the disk meshed as an elastic FE shot, E_s = 100 E,"
+echo "thesis's sense, partial contact scheme ${scheme:-unknown}, demshot's default)"
+echo "and the disk meshed as an elastic FE shot, E_s = 100 E,"
 echo "in node-to-segment penalty contact whose pressure is that law's"
 echo "Winkler form (lib/shot/feshot2d.h), contact damping 0.3, no friction;"
 echo "both run to 200 us (fe-shot.sh).  Forces in N per mm."

@@ -9,7 +9,9 @@
 #            our alpha is alpha (R / 1 mm)^(2m - 2) (lib/contact/law.h,
 #            dem_law_alpha_thesis2d): alpha itself for the linear law,
 #            20 alpha for the Hertz law and the 20 mm disk
-#   PARTIAL  area (Eq. 3.10) or width (Eq. 3.11): the partial contact factor
+#   PARTIAL  area (Eq. 3.10), width (Eq. 3.11) or potential (beyond the
+#            thesis, demshot's default; lib/contact/disk.h): the partial
+#            contact scheme
 #   RHO      the disk's density, kg/m^3 (7800: steel, demshot's default;
 #            Ch. 7.4 gives none); other values only for the duration
 #            question of README.md

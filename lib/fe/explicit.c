@@ -21,9 +21,16 @@
  * element state of the block PF ahead is prefetched.
  *
  * Slabs.  Elements are numbered i fastest, then j, then k, so a slab of
- * whole k-layers is a contiguous range of elements.  Adjacent slabs share
- * a plane of nodes; slabs two apart share none, so all even slabs can add
- * their forces at once, then all odd ones.
+ * whole k-layers is a contiguous range of elements, and so is a band of
+ * rows of one layer.  A mesh of many layers is cut into slabs of whole
+ * layers; a thin one (fewer than MINLAYER layers) into bands of rows of
+ * each layer, so that each phase below has tasks enough to keep every
+ * thread busy (a 10-layer block had 5 slabs to a phase: with 2 threads,
+ * one thread waited a third of each phase).  Slab (k, b) shares nodes only
+ * with slabs k +- 1 and b +- 1, so the slabs of one colour (k mod 2,
+ * b mod 2) add their forces at once, the four colours one after another.
+ * The cut depends on the mesh only, never on the threads: a node's forces
+ * are summed in the same order whatever their number.
  */
 #include "fe/explicit.h"
 
@@ -40,6 +47,8 @@
 
 #define NCHUNK 64     /* node chunks of the node loop (fixed: see header) */
 #define MAXSLAB 32    /* slabs of element layers */
+#define MINLAYER 16   /* fewer layers: each layer cut in bands of rows */
+#define MINTASK 8     /* slabs to a colour, at least, in a banded mesh */
 #ifndef PF
 #define PF 4 /* blocks ahead to prefetch */
 #endif
@@ -70,6 +79,7 @@ typedef struct slab {
 	size_t e0, e1;     /* elements [e0, e1) */
 	size_t b0, nb;     /* one-point blocks [b0, b0 + nb) */
 	int k0, k1;        /* element layers [k0, k1) */
+	int j0, j1;        /* rows [j0, j1) of each */
 	double sum[E_N];   /* this step's element sums */
 	double dt2;        /* least squared step estimate (large strain) */
 	size_t bad;        /* 1 + first bad element, 0 if none */
@@ -111,16 +121,23 @@ struct dem_fe {
 			       * of element 0 plus e (a run along a row) */
 	int hg;               /* hourglass control on */
 	int nthr;             /* threads */
-	int nslab;
-	slab_t *slab;
-	int *slab_of_k;
+	int nslab, nband;     /* slabs; bands of rows to a layer group */
+	slab_t *slab;         /* layer group major, band minor: element order */
+	int *slab_of_k;       /* layer group of layer k */
+	int *band_of_j;       /* band of row j */
+	int *order;           /* slabs by colour, colour c from order[coff[c]] */
+	int coff[5];
 	double chunk[NCHUNK][DEM_CD_N];
 	/* loads */
 	pload_t *pl;
 	int npl;
 	dem_fe_load_fn hook;
 	void *hctx;
+	size_t hlo, hhi;      /* the nodes the hook may load: [hlo, hhi) */
+	size_t plo, phi;      /* the nodes of the pressure loads */
 	int ext;              /* external forces this step */
+	size_t xlo, xhi;      /* ... on nodes [xlo, xhi) alone: the node loop
+			       * reads and clears fx there only */
 	/* time */
 	double t, dt_prev, dt_stable;
 	long steps;
@@ -193,7 +210,8 @@ static void elem_ijk(const dem_mesh_t *m, size_t el, int *i, int *j, int *k)
 /* block and lane of a one-point element */
 static void elem_lane(const dem_fe_t *fe, size_t el, size_t *blk, int *lane)
 {
-	const slab_t *s = &fe->slab[fe->slab_of_k[el / ((size_t)fe->mesh->nx * (size_t)fe->mesh->ny)]];
+	size_t nx = (size_t)fe->mesh->nx, ny = (size_t)fe->mesh->ny;
+	const slab_t *s = &fe->slab[fe->slab_of_k[el / (nx * ny)] * fe->nband + fe->band_of_j[el / nx % ny]];
 	size_t loc = el - s->e0;
 	*blk = s->b0 + loc / NB;
 	*lane = (int)(loc % NB);
@@ -210,7 +228,7 @@ void dem_fe_free(dem_fe_t *fe)
 	free(fe->sig), free(fe->ep), free(fe->Qs), free(fe->eps), free(fe->kdt);
 	free(fe->kin), free(fe->syc);
 	free(fe->run);
-	free(fe->slab), free(fe->slab_of_k);
+	free(fe->slab), free(fe->slab_of_k), free(fe->band_of_j), free(fe->order);
 	free(fe->soff), free(fe->noff), free(fe->boff), free(fe->pbuf), free(fe->grec), free(fe->goff);
 	for (int i = 0; i < fe->npl; i++)
 		free(fe->pl[i].quad), free(fe->pl[i].t), free(fe->pl[i].p);
@@ -298,7 +316,7 @@ static int ranks_setup(dem_fe_t *fe, dem_error_t *e)
 {
 	const dem_mesh_t *m = fe->mesh;
 	dem_par_t *p = fe->o.par;
-	int P = dem_par_size(p), ns = fe->nslab;
+	int P = dem_par_size(p), nb = fe->nband, ns = fe->nslab / nb;  /* layer groups */
 	fe->par = p;
 	fe->nrank = P;
 	fe->rank = dem_par_rank(p);
@@ -315,7 +333,7 @@ static int ranks_setup(dem_fe_t *fe, dem_error_t *e)
 		return -1;
 	int full = fe->o.rule == DEM_FE_FULL;
 	for (int r = 0; r <= P; r++) {
-		int s = (int)((long)r * ns / P);
+		int s = (int)((long)r * ns / P) * nb;  /* whole layer groups: planes between ranks */
 		fe->soff[r] = (size_t)s;
 		fe->noff[r] = r == P ? fe->nn : (size_t)fe->slab[s].k0 * fe->plane;
 		fe->boff[r] = r == P ? (full ? fe->ne : fe->nblk) : full ? fe->slab[s].e0 : fe->slab[s].b0;
@@ -372,31 +390,56 @@ int dem_fe_create(dem_fe_t **out, const dem_mesh_t *mesh, const dem_mat_t *mat,
 	size_t nn = fe->nn, ne = fe->ne;
 	fe->nthr = o->threads > 0 ? o->threads : ne >= PAR_MIN ? omp_get_max_threads() : 1;
 
-	/* slabs of whole layers */
-	int nz = mesh->nz;
-	size_t lay = (size_t)mesh->nx * (size_t)mesh->ny;
-	/* more ranks than MAXSLAB: a slab each (the serial slabs, and those of
-	 * up to MAXSLAB ranks, do not depend on the ranks) */
+	/* slabs: groups of whole layers, or in a thin mesh bands of rows of
+	 * each layer, enough for MINTASK slabs to a colour; more ranks than
+	 * MAXSLAB: a group each (the serial slabs, and those of up to MAXSLAB
+	 * ranks, do not depend on the ranks) */
+	int nz = mesh->nz, ny = mesh->ny;
+	size_t nx = (size_t)mesh->nx;
 	int np = dem_par_size(o->par), ms = np > MAXSLAB ? np : MAXSLAB;
-	fe->nslab = nz < ms ? nz : ms;
+	int ngrp = nz < ms ? nz : ms, nband = 1;
+	if (nz < MINLAYER) {
+		int half = (nz + 1) / 2;
+		nband = 2 * ((MINTASK + half - 1) / half);
+		nband = nband < ny ? nband : ny;
+	}
+	fe->nband = nband;
+	fe->nslab = ngrp * nband;
 	fe->slab = calloc((size_t)fe->nslab, sizeof *fe->slab);
 	fe->slab_of_k = malloc((size_t)nz * sizeof *fe->slab_of_k);
-	if (!fe->slab || !fe->slab_of_k)
+	fe->band_of_j = malloc((size_t)ny * sizeof *fe->band_of_j);
+	fe->order = malloc((size_t)fe->nslab * sizeof *fe->order);
+	if (!fe->slab || !fe->slab_of_k || !fe->band_of_j || !fe->order)
 		goto nomem;
 	size_t nblk = 0;
-	for (int s = 0; s < fe->nslab; s++) {
-		slab_t *sl = &fe->slab[s];
-		sl->k0 = (int)((long)s * nz / fe->nslab);
-		sl->k1 = (int)((long)(s + 1) * nz / fe->nslab);
-		sl->e0 = (size_t)sl->k0 * lay;
-		sl->e1 = (size_t)sl->k1 * lay;
-		sl->b0 = nblk;
-		sl->nb = (sl->e1 - sl->e0 + NB - 1) / NB;
-		nblk += sl->nb;
-		for (int k = sl->k0; k < sl->k1; k++)
-			fe->slab_of_k[k] = s;
-	}
+	for (int g = 0; g < ngrp; g++)
+		for (int b = 0; b < nband; b++) {
+			slab_t *sl = &fe->slab[g * nband + b];
+			sl->k0 = (int)((long)g * nz / ngrp);
+			sl->k1 = (int)((long)(g + 1) * nz / ngrp);
+			sl->j0 = (int)((long)b * ny / nband);
+			sl->j1 = (int)((long)(b + 1) * ny / nband);
+			/* one layer to a group when banded: the rows contiguous */
+			sl->e0 = nx * ((size_t)sl->j0 + (size_t)ny * (size_t)sl->k0);
+			sl->e1 = nband > 1 ? nx * ((size_t)sl->j1 + (size_t)ny * (size_t)sl->k0)
+					   : nx * (size_t)ny * (size_t)sl->k1;
+			sl->b0 = nblk;
+			sl->nb = (sl->e1 - sl->e0 + NB - 1) / NB;
+			nblk += sl->nb;
+			for (int k = sl->k0; k < sl->k1; k++)
+				fe->slab_of_k[k] = g;
+			for (int j = sl->j0; j < sl->j1; j++)
+				fe->band_of_j[j] = b;
+		}
 	fe->nblk = nblk;
+	int no = 0;
+	for (int c = 0; c < 4; c++) {
+		fe->coff[c] = no;
+		for (int s = 0; s < fe->nslab; s++)
+			if ((s / nband % 2) == c / 2 && (s % nband % 2) == c % 2)
+				fe->order[no++] = s;
+	}
+	fe->coff[4] = no;
 	int rrc = ranks_setup(fe, e);
 	if (rrc < 0)
 		goto nomem;
@@ -500,6 +543,7 @@ int dem_fe_create(dem_fe_t **out, const dem_mesh_t *mesh, const dem_mat_t *mat,
 		}
 	fe->fix = mesh->fix;
 	fe->pmass = fe->mass;
+	fe->plo = nn, fe->phi = 0;
 	if (mesh->ntie > 0 && tie_setup(fe))
 		goto nomem;
 	fe->dt_stable = o->dt_factor * dtmin;
@@ -544,6 +588,10 @@ int dem_fe_add_pressure(dem_fe_t *fe, size_t nquad, const uint32_t *quad,
 	memcpy(pl->p, p, nt * sizeof *p);
 	pl->nq = nquad;
 	pl->nt = nt;
+	for (size_t q = 0; q < 4 * nquad; q++) {
+		fe->plo = quad[q] < fe->plo ? quad[q] : fe->plo;
+		fe->phi = quad[q] + (size_t)1 > fe->phi ? quad[q] + (size_t)1 : fe->phi;
+	}
 	fe->npl++;
 	return DEM_OK;
 }
@@ -575,6 +623,13 @@ void dem_fe_set_load(dem_fe_t *fe, dem_fe_load_fn fn, void *ctx)
 {
 	fe->hook = fn;
 	fe->hctx = ctx;
+	fe->hlo = 0, fe->hhi = fe->nn;
+}
+
+void dem_fe_set_load_nodes(dem_fe_t *fe, size_t n0, size_t n1)
+{
+	fe->hlo = n0 < fe->nn ? n0 : fe->nn;
+	fe->hhi = n1 < fe->nn ? n1 : fe->nn;
 }
 
 static void apply_pressure(dem_fe_t *fe, const pload_t *pl, double t)
@@ -610,6 +665,16 @@ static void apply_pressure(dem_fe_t *fe, const pload_t *pl, double t)
 
 /* ---- Node loop ------------------------------------------------------------ */
 
+/* vector blend: lanes of a where the mask m is set, else of b (a macro:
+ * a function returning a vector would change the ABI where AVX is off) */
+#define BLEND4(m, a, b) ((vec4)(((m) & (lvec4)(a)) | (~(m) & (lvec4)(b))))
+
+/* Nodes [n0, n1): the velocity and coordinate update of each degree of
+ * freedom, and the energy sums.  Four nodes at a time as 12 degrees of
+ * freedom in three vectors (the per-degree arithmetic of the scalar tail,
+ * expression for expression: the same updates bit for bit; the sums are
+ * kept per lane, so their rounding depends on the grouping, the updates'
+ * does not). */
 static inline __attribute__((always_inline)) void node_range(dem_fe_t *fe, const dem_cd_coef_t *c, size_t n0, size_t n1,
 			      double sum[DEM_CD_N], const int ext)
 {
@@ -617,8 +682,51 @@ static inline __attribute__((always_inline)) void node_range(dem_fe_t *fe, const
 	double *restrict x = fe->x, *restrict v = fe->v, *restrict fi = fe->fi;
 	double *restrict fx = fe->fx;
 	const double *restrict mass = fe->mass;
+	vec4 T4 = { 0 }, wxa4 = { 0 }, wxb4 = { 0 }, wda4 = { 0 }, wdb4 = { 0 };
+	const vec4 zero = { 0 };
+	/* the fixed bit of each lane's degree of freedom (node-major x, y, z) */
+	const lvec4 bit[3] = { { 1, 2, 4, 1 }, { 2, 4, 1, 2 }, { 4, 1, 2, 4 } };
+	size_t n = n0;
+	for (; n + 4 <= n1; n += 4) {
+		vec4 mv = *(const uvec4 *)(mass + n), rmv = c->cf / mv;
+		vec4 M[3] = { SHUF4(mv, mv, 0, 0, 0, 1), SHUF4(mv, mv, 1, 1, 2, 2), SHUF4(mv, mv, 2, 3, 3, 3) };
+		vec4 RM[3] = { SHUF4(rmv, rmv, 0, 0, 0, 1), SHUF4(rmv, rmv, 1, 1, 2, 2),
+			       SHUF4(rmv, rmv, 2, 3, 3, 3) };
+		long long f0 = fix[n], f1 = fix[n + 1], f2 = fix[n + 2], f3 = fix[n + 3];
+		lvec4 FB[3] = { { f0, f0, f0, f1 }, { f1, f1, f2, f2 }, { f2, f3, f3, f3 } };
+		for (int q = 0; q < 3; q++) {
+			size_t d = 3 * n + 4 * (size_t)q;
+			lvec4 fixed = (FB[q] & bit[q]) != 0;
+			vec4 m = M[q], rm = RM[q];
+			vec4 fext = zero;
+			if (ext)
+				fext = *(const uvec4 *)(fx + d);
+			vec4 fid = *(const uvec4 *)(fi + d);
+			vec4 F = fext - fid;
+			vec4 vm = *(const uvec4 *)(v + d);
+			vec4 vp = BLEND4(fixed, vm, (c->co * vm + rm * F) * c->rden);
+			vec4 vn = c->w1 * vp + c->w0 * vm;
+			vec4 dua = c->dtp * vm, dub = c->dt * vp;
+			vec4 fd = c->alpha * m * vn;
+			vec4 fa = BLEND4(fixed, m * (vp - vm) * c->rdth + fd + fid, fext);
+			T4 += m * (c->k0 * vm + c->k1 * vp) * vp;
+			wda4 += fd * dua;
+			wdb4 += fd * dub;
+			wxa4 += fa * dua;
+			wxb4 += fa * dub;
+			*(uvec4 *)(v + d) = vp;
+			*(uvec4 *)(x + d) = *(const uvec4 *)(x + d) + dub;
+			*(uvec4 *)(fi + d) = zero;
+			if (ext)
+				*(uvec4 *)(fx + d) = zero;
+		}
+	}
 	double T = 0, wxa = 0, wxb = 0, wda = 0, wdb = 0;
-	for (size_t n = n0; n < n1; n++) {
+	for (int l = 0; l < 4; l++) {
+		T += T4[l], wxa += wxa4[l], wxb += wxb4[l];
+		wda += wda4[l], wdb += wdb4[l];
+	}
+	for (; n < n1; n++) {
 		double m = mass[n], rm = c->cf / m;
 		unsigned fb = fix[n];
 		for (int k = 0; k < 3; k++) {
@@ -661,7 +769,7 @@ static inline __attribute__((always_inline)) void node_part(dem_fe_t *fe, const 
 		memset(sum, 0, DEM_CD_N * sizeof *sum);
 		return;
 	}
-	if (fe->ext)
+	if (fe->ext && n0 < fe->xhi && fe->xlo < n1)
 		node_range(fe, c, n0, n1, sum, 1);
 	else
 		node_range(fe, c, n0, n1, sum, 0);
@@ -1125,6 +1233,11 @@ int dem_fe_step(dem_fe_t *fe, double dt, dem_error_t *e)
 
 	/* 1. external forces at t_n on x_n */
 	fe->ext = fe->npl > 0 || fe->hook;
+	fe->xlo = fe->plo, fe->xhi = fe->phi;
+	if (fe->hook) {
+		fe->xlo = fe->hlo < fe->xlo ? fe->hlo : fe->xlo;
+		fe->xhi = fe->hhi > fe->xhi ? fe->hhi : fe->xhi;
+	}
 	if (fe->hook) {
 		int rc = fe->hook(fe->hctx, tn, dt, fe->x, fe->v, fe->fx, e);
 		if (rc) {
@@ -1153,13 +1266,17 @@ int dem_fe_step(dem_fe_t *fe, double dt, dem_error_t *e)
 	if (fe->nrank == 1)
 		energy_at_tn(fe, tn);
 
-	/* 4. elements on x_{n+1}: even slabs, then odd slabs */
+	/* 4. elements on x_{n+1}: the slabs colour by colour (several
+	 * ranks: this rank's, [s0, s1)) */
 	int s0 = fe->s0, s1 = fe->s1;
 #pragma omp parallel num_threads(nthr) if (nthr > 1)
-	for (int ph = 0; ph < 2; ph++) {
+	for (int c = 0; c < 4; c++) {
+		if (fe->coff[c] == fe->coff[c + 1])
+			continue;
 #pragma omp for schedule(dynamic, 1)
-		for (int s = s0 + ((s0 & 1) != ph); s < s1; s += 2)
-			slab_run(fe, &fe->slab[s], dt);
+		for (int o = fe->coff[c]; o < fe->coff[c + 1]; o++)
+			if (fe->order[o] >= s0 && fe->order[o] < s1)
+				slab_run(fe, &fe->slab[fe->order[o]], dt);
 	}
 	double w2 = dem_wall();
 	if (fe->nrank > 1) {
@@ -1357,7 +1474,7 @@ void dem_fe_sync(dem_fe_t *fe)
  * steps), the per-step scratch (chunk, slab sums), what dem_fe_create
  * derives from the mesh (mass, slabs), and the failure (a failed model is
  * not saved). */
-#define CKPT_VERSION 1
+#define CKPT_VERSION 2 /* 2: blocks by banded slabs (thin meshes) */
 #define CKPT_MAXITEM 32
 
 static int ckpt_items(const dem_fe_t *cfe, dem_ckpt_item_t *it)

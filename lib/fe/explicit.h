@@ -219,6 +219,14 @@ typedef int (*dem_fe_load_fn)(void *ctx, double t, double dt, const double *x,
 			      const double *v, double *f, dem_error_t *e);
 void dem_fe_set_load(dem_fe_t *fe, dem_fe_load_fn fn, void *ctx);
 
+/* A promise of the hook set last: it adds forces to nodes n0 <= n < n1
+ * alone (dem_fe_set_load: any node).  The node loop then reads and clears
+ * the external forces of that range alone, plus the pressure loads' nodes:
+ * a force the hook adds outside it would be neither applied nor cleared.
+ * (The shot contact loads the top plane of nodes, the last of the mesh's
+ * numbering: the node loop's traffic of the external forces goes.) */
+void dem_fe_set_load_nodes(dem_fe_t *fe, size_t n0, size_t n1);
+
 /* ---- Time stepping ----------------------------------------------------- */
 
 /* The stable step for the current shape (dt_factor included). */

@@ -861,6 +861,17 @@ int dem_shotset_hook(void *ctx, double t, double dt, const double *x, const doub
 
 /* ---- queries ------------------------------------------------------------ */
 
+void dem_shotset_nodes(const dem_shotset_t *S, size_t *n0, size_t *n1)
+{
+	size_t lo = SIZE_MAX, hi = 0;
+	for (size_t k = 0; k < S->ntop; k++) {
+		lo = S->top[k] < lo ? S->top[k] : lo;
+		hi = S->top[k] + (size_t)1 > hi ? S->top[k] + (size_t)1 : hi;
+	}
+	*n0 = lo <= hi ? lo : 0;
+	*n1 = hi;
+}
+
 /* Whether the straight path of shot b (no contact: it flies freely) never
  * meets the box lo..hi enlarged by its radius, in dim dimensions. */
 static int path_misses(const dem_shot_body_t *b, int dim, const double *lo, const double *hi)

@@ -150,6 +150,9 @@ int dem_shotset_prepare(dem_shotset_t *S, const double *x, const double *v, doub
  * step dt is not checked against the contacts). */
 int dem_shotset_hook(void *ctx, double t, double dt, const double *x, const double *v,
 		     double *f, dem_error_t *e);
+/* The nodes the hook loads: [*n0, *n1), the top plane's (for
+ * dem_fe_set_load_nodes). */
+void dem_shotset_nodes(const dem_shotset_t *S, size_t *n0, size_t *n1);
 
 /* 1 when every shot has left: no contact at the last step, and moving
  * away from the block (upward) or on a straight path that never meets the

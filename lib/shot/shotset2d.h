@@ -17,8 +17,9 @@
  *           mass rho pi R^2 t, its law the scene's at dim = 2 (a force per
  *           unit thickness, law.h) times t.  Forces, masses and energies
  *           are those of the slab t thick, as explicit2d.h's; divide by t
- *           for values per unit length.  Partial contact: the overlap area
- *           or the contact width factor of disk.h (Eqs. 3.10, 3.11).
+ *           for values per unit length.  Partial contact: the scheme of
+ *           the model (disk.h: the potential scheme, demshot's default,
+ *           or the overlap area or contact width factor, Eqs. 3.10, 3.11).
  *           Disks of a pass touching each other: disk/disk contact
  *           (sphere.h in the plane, Eq. 3.8), all pairs of the pass.
  *   AXISYM  a shot is a rigid sphere on the axis (x = r = 0), moving along

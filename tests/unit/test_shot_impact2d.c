@@ -39,7 +39,13 @@
  *  - two KNOWN FAILURES, skipped with their figures while they fail: the
  *    area scheme gains 1.4 % at alpha 0.5 with the linear law, the width
  *    scheme gains without bound on a soft block (see the tests); the
- *    potential scheme (disk.h) holds the bound on both, asserted;
+ *    potential scheme (disk.h) holds the bound on both, asserted.  The
+ *    potential scheme is demshot's default in plane strain (issue 18),
+ *    and the cases that name no scheme run it (ch74_setup);
+ *  - the area case of alpha 0.5 with the linear law in axisymmetry (a
+ *    sphere on the axis, the ring scheme of shotset2d.h: the only one
+ *    there): the same energy bound, asserted at alpha 0.5 and 1; a third
+ *    KNOWN FAILURE at alpha 2.5 to 10, the step's (see the test);
  * To look at one case: ONLY=test_name, LAMBDA (Box 3.1 factor), HH (the
  * element of the Ch. 7.4 block), TRACE (disk 0's force at every step).
  * Data: the Ch. 7.4 case (thesis-data.yaml, shot_peening_2d): a disk of R
@@ -116,6 +122,8 @@ typedef struct setup {
 	/* block [-W/2, W/2] x [-H, 0], fine region [-Wf/2, Wf/2] x [-Hf, 0]
 	 * with elements h, growth ratio outside; sides free, bottom fixed */
 	double W, H, Wf, Hf, h, ratio;
+	dem_quad4_mode_t mode;   /* PLANE (0), or AXISYM: r from 0 to W / 2, the fine region
+				  * r <= Wf / 2, the axis's nodes held radially */
 	dem_mat_param_t mat;
 	int large;
 	dem_contact_param_t cp;
@@ -156,14 +164,17 @@ typedef struct result {
 
 static void mesh_build(const setup_t *s, dem_mesh2_t *m)
 {
-	dem_axis_t ax[2] = { { -s->W / 2, s->W / 2, -s->Wf / 2, s->Wf / 2, s->h, s->ratio, 0 },
+	const double x0 = s->mode == DEM_QUAD4_AXISYM ? 0 : -s->W / 2,
+		     f0 = s->mode == DEM_QUAD4_AXISYM ? 0 : -s->Wf / 2;
+	dem_axis_t ax[2] = { { x0, s->W / 2, f0, s->Wf / 2, s->h, s->ratio, 0 },
 			     { -s->H, 0, -s->Hf, 0, s->h, s->ratio, 0 } };
 	dem_error_t e = { 0 };
 	int rc = dem_mesh2_rect(m, ax, &e);
 	if (rc)
 		fprintf(stderr, "%s\n", e.msg);
 	assert_int_equal(rc, DEM_OK);
-	/* Ch. 7.4: bottom fixed in x and y, the rest free */
+	/* Ch. 7.4: bottom fixed in x and y, the rest free (the axis's nodes
+	 * keep u_r = 0 in axisymmetry, whatever xmin says: explicit2d.h) */
 	dem_bc_t bc[4] = { DEM_BC_FREE, DEM_BC_FREE, DEM_BC_FIXED, DEM_BC_FREE };
 	dem_mesh2_set_bc(m, bc);
 }
@@ -203,7 +214,7 @@ static void run(const setup_t *s, result_t *r)
 	assert_int_equal(dem_mat_init(&mat, &s->mat, &e), DEM_OK);
 	dem_fe2_opts_t fo;
 	dem_fe2_opts_default(&fo);
-	fo.mode = DEM_QUAD4_PLANE;
+	fo.mode = s->mode;
 	fo.thick = THICK;
 	fo.large = s->large;
 	assert_int_equal(dem_fe2_create(&fe, &mesh, &mat, &fo, &e), DEM_OK);
@@ -212,7 +223,7 @@ static void run(const setup_t *s, result_t *r)
 	probe.inner = cm.kernel;
 	probe.mu = s->cp.mu;
 	cm.kernel = probe_kernel;
-	dem_shotset2d_opts_t so = { .mode = DEM_QUAD4_PLANE, .thick = THICK,
+	dem_shotset2d_opts_t so = { .mode = s->mode, .thick = THICK,
 				    .rho = s->rho_shot > 0 ? s->rho_shot : RHO,
 				    .lambda = s->lambda, .gap = s->gap };
 	int rc = dem_shotset2d_create(&S, &mesh, dem_fe2_mass(fe), &cm, &so, &e);
@@ -331,7 +342,9 @@ static void run(const setup_t *s, result_t *r)
 
 /* The Ch. 7.4 disk on the Ch. 7.4 block (coarse: 1 mm elements over the
  * middle 24 mm and 10 mm down, as examples/twod's fine region), large
- * strain, with a law of exponent m and the thesis's alpha. */
+ * strain, with a law of exponent m and the thesis's alpha; the partial
+ * contact scheme demshot's default in plane strain, potential (a test
+ * may set another). */
 static void ch74_setup(setup_t *s, double alpha_t, double m)
 {
 	memset(s, 0, sizeof *s);
@@ -344,6 +357,7 @@ static void ch74_setup(setup_t *s, double alpha_t, double m)
 		s->h = atof(getenv("HH"));
 	s->ns = 1;
 	s->shot[0] = (dem_shot_t){ .r = R_DISK, .v = { 0, 0, -V_DISK } };
+	s->cp.partial = DEM_PARTIAL_POTENTIAL;
 	dem_error_t e = { 0 };
 	assert_int_equal(dem_law_init_dim(&s->cp.law, dem_law_alpha_thesis2d(alpha_t, m, R_DISK), 210e9,
 					  m, 2, &e), DEM_OK);
@@ -384,9 +398,10 @@ static int alpha_case(double alpha, double m, int sch)
 	return ok;
 }
 
-/* The three 2D partial contact schemes (disk.h; area is demshot's
- * default), but for the known failure below: the potential scheme holds
- * the bound on that case too (linear law, alpha 0.5). */
+/* The three 2D partial contact schemes (disk.h; potential is demshot's
+ * default in plane strain), but for the known failure below: the
+ * potential scheme holds the bound on that case too (linear law, alpha
+ * 0.5). */
 static void alpha_sweep(double m)
 {
 	static const double alpha[] = { 0.5, 1, 2.5, 5, 10 };
@@ -424,6 +439,77 @@ static void test_alpha_linear_area_known(void **state)
 	(void)state;
 	if (!alpha_case(0.5, 1, 0)) {
 		printf("# KNOWN FAILURE: the area scheme gains more than 1 %% (linear law, alpha 0.5)\n");
+		skip();
+	}
+}
+
+/* The known failure's case in axisymmetry (Ch. 7.5.1's model): a sphere
+ * of the disk's radius and speed on the axis of a cylinder of the block's
+ * half width (30 mm) and depth, the same mesh (r from the axis), the 3D
+ * linear law (law.h: k_n = alpha E R, the law of an axisymmetric shot,
+ * shotset2d.h) at the alphas of Ch. 7.5.2's sweep (thesis-data.yaml,
+ * shot_peening_3d), with the ring scheme, the only one there (demshot
+ * takes no contact.partial in axisymmetry and names it area).  One case;
+ * the checks of the sweep when the energy holds; returns whether it held
+ * (E max/start <= 1.01). */
+static int axisym_case(double alpha)
+{
+	setup_t s;
+	result_t r;
+	ch74_setup(&s, 1, 1);
+	s.mode = DEM_QUAD4_AXISYM;
+	s.cp.partial = DEM_PARTIAL_AREA;
+	dem_error_t e = { 0 };
+	assert_int_equal(dem_law_init(&s.cp.law, alpha, 210e9, 1, &e), DEM_OK);
+	run(&s, &r);
+	double kn = dem_law_kn(&s.cp.law, R_DISK), M = RHO * 4.0 / 3 * DEM_PI * pow(R_DISK, 3);
+	double um = dem_dt_umax(1, kn, M, V_DISK);
+	int ok = r.Emax <= 1.01 * r.E0;
+	printf("# axisymmetric, ring scheme, linear law, alpha %g, lambda %g: Fmax %.4g N, E max/start %.5f, "
+	       "end/start %.4f, exit vz %.3g m/s, deepest node %.3f u_max(wall) (largest overlap of a ring's "
+	       "line %.3f), %ld steps\n", alpha, s.lambda, r.Fmax, r.Emax / r.E0, r.Eend / r.E0, r.v[0][1],
+	       r.pmax / um, r.dmax / um, r.steps);
+	assert_int_equal(r.rc, DEM_OK);
+	if (ok) {
+		assert_true(r.pmax > 0 && r.pmax <= um * (1 + s.lambda * s.lambda));
+		assert_true(r.v[0][1] > 0 && r.v[0][1] < V_DISK);
+	}
+	free(r.u);
+	return ok;
+}
+
+/* Alpha 0.5 (the plane area scheme's known failure) and 1: E max/start
+ * 1.0007 and 1.0028 (lambda 0.2). */
+static void test_axisym_linear(void **state)
+{
+	(void)state;
+	static const double alpha[] = { 0.5, 1 };
+	for (int k = 0; k < SLOW_CASES(2, 1); k++)
+		assert_true(axisym_case(alpha[k]));
+}
+
+/* KNOWN FAILURE, a finding of issue 18: the stiffer linear laws in
+ * axisymmetry gain energy at the default step: E max/start 1.096 at alpha
+ * 2.5, 1.175 at alpha 5, 6.6 at alpha 10 (lambda 0.2; the sphere leaves
+ * at 0.1 to 0.15 m/s from 12.2), but 1.00000 and 1.00001 at alpha 2.5 and
+ * 5 at lambda 0.05 (33 and 62 times the steps), so the step's.  Our
+ * reading, not measured: a ring's force, gamma k delta with gamma its
+ * surface in the sphere over pi b^2, is for the linear law about
+ * k r dx / R, set by the chord's length in the sphere, which grows as the
+ * square root of the overlap: stiffer than the gamma k of the Box 3.1
+ * limit.  The Hertz-type law (m 1.5)
+ * holds at lambda 0.2 for alpha 0.5 to 10 (1.00000).  Skipped while it
+ * fails, with its figures. */
+static void test_axisym_linear_known(void **state)
+{
+	(void)state;
+	static const double alpha[] = { 2.5, 5, 10 };
+	int fails = 0;
+	for (int k = 0; k < SLOW_CASES(3, 1); k++)
+		fails += !axisym_case(alpha[k]);
+	if (fails) {
+		printf("# KNOWN FAILURE: the linear law in axisymmetry gains more than 1 %% (%d of the cases)\n",
+		       fails);
 		skip();
 	}
 }
@@ -468,7 +554,8 @@ static int soft_case(double alpha, int sch)
 	return ok;
 }
 
-/* The area scheme (demshot's default in 2D). */
+/* The area scheme (Eq. 3.10; demshot's default in plane strain before
+ * issue 18 made it potential). */
 static void test_soft_block(void **state)
 {
 	(void)state;
@@ -743,6 +830,8 @@ int main(void)
 		cmocka_unit_test(test_alpha_hertz),
 		cmocka_unit_test(test_alpha_linear),
 		cmocka_unit_test(test_alpha_linear_area_known),
+		cmocka_unit_test(test_axisym_linear),
+		cmocka_unit_test(test_axisym_linear_known),
 		cmocka_unit_test(test_soft_block),
 		cmocka_unit_test(test_soft_block_width_known),
 		cmocka_unit_test(test_soft_block_potential),
