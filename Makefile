@@ -4,6 +4,11 @@
 #   make check      build and run every test; ends with "N passed, N failed"
 #   make check SANITIZE=1   the same under AddressSanitizer and UBSan
 #   make check CC=clang     the same built by clang (in build/rel-clang)
+#   make MPI=1      the programs on MPI (mpicc, -DDEM_MPI; in build/rel-mpi,
+#                   lib/par/par_mpi.c for lib/par/par.c); make check links
+#                   demshot so (build/rel-mpicheck) and runs the MPI tests
+#                   too when mpicc is installed (test_fe_ranks under mpirun,
+#                   tests/cli/mpi.bats)
 #   make demo       set up and run the main job on a bundled scene
 #   make deps       install the Debian packages the build needs (as root)
 #   make install    install under PREFIX (/usr/local); DESTDIR stages it
@@ -53,20 +58,26 @@ endif
 ifneq ($(COMPILER),)
 BUILD    := $(BUILD)-$(COMPILER)
 endif
+# MPI=1: the build on MPI beside the others (explicit.h, "Ranks")
+MPI_ON   := $(filter 1,$(MPI))
+ifeq ($(MPI_ON),1)
+CC       := mpicc
+BUILD    := $(BUILD)-mpi
+endif
 ifeq ($(COMPILER),clang)
 # valgrind 3.19 (Debian 12) does not read clang's default DWARF 5
 OPT      += -gdwarf-4
 endif
 
 DEM_CFLAGS := -std=c11 -Wall -Wextra -Werror $(OPT) -D_POSIX_C_SOURCE=200809L \
-            -DDEM_VERSION='"$(VERSION)"' -Ilib -fopenmp \
+            -DDEM_VERSION='"$(VERSION)"' -Ilib -fopenmp $(if $(MPI_ON),-DDEM_MPI) \
             $(shell pkg-config --cflags $(PKGS) 2>/dev/null) -I/usr/include/suitesparse
 ALL_CFLAGS = $(DEM_CFLAGS) $(CPPFLAGS) $(CFLAGS)
 # CHOLMOD (SuiteSparse) has no pkg-config file on Debian 12
 LDLIBS   := $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lcholmod -lm
 ALL_LDFLAGS = $(filter -fsanitize% -fno-sanitize%,$(OPT)) -fopenmp $(LDFLAGS)
 
-LIB_SRC  := $(sort $(wildcard lib/*/*.c))
+LIB_SRC  := $(filter-out $(if $(MPI_ON),lib/par/par.c,lib/par/par_mpi.c),$(sort $(wildcard lib/*/*.c)))
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
 CMD_SRC  := $(sort $(wildcard cmd/*.c))
 PROGS    := $(CMD_SRC:cmd/%.c=$(BUILD)/bin/%)
@@ -78,7 +89,7 @@ FUZZER   := $(BUILD)/tests/fuzz-readers
 # bash completion, made from each program's --help (tools/completion.sh)
 COMPLETIONS := $(PROGS:$(BUILD)/bin/%=$(BUILD)/completion/%)
 
-ifneq ($(SAN)$(COMPILER),)
+ifneq ($(SAN)$(COMPILER)$(MPI_ON),)
 LIBDEM   := $(BUILD)/lib/libdem.a
 BUILDBIN := $(BUILD)/bin
 else
@@ -86,7 +97,7 @@ LIBDEM   := lib/libdem.a
 BUILDBIN := bin
 endif
 
-.PHONY: all deps build check test demo clean bench FORCE \
+.PHONY: all deps build check test demo clean bench FORCE mpi-build \
         install uninstall installcheck deb fuzz
 .SUFFIXES:
 .SECONDARY:
@@ -119,7 +130,7 @@ $(BUILD)/bin/%: $(BUILD)/cmd/%.o $(LIBDEM)
 	@mkdir -p $(@D)
 	$(CC) $(ALL_LDFLAGS) $< $(LIBDEM) $(LDLIBS) -o $@
 
-ifeq ($(SAN)$(COMPILER),)
+ifeq ($(SAN)$(COMPILER)$(MPI_ON),)
 bin/%: $(BUILD)/bin/%
 	@mkdir -p bin
 	cp $< $@.tmp && mv -f $@.tmp $@
@@ -158,10 +169,44 @@ CHECK_JOBS = $(shell nproc 2>/dev/null || echo 1)
 check: deps
 	@$(MAKE) --no-print-directory $(if $(filter -j%,$(MAKEFLAGS)),,-j$(CHECK_JOBS)) test
 
+# make check also builds demshot and the MPI unit tests on MPI (in
+# build/rel-mpicheck) and runs them when mpicc is installed (make deps
+# installs OpenMPI): in the plain build only, not under SANITIZE, another CC
+# or MPI=1.  They are the plain build's objects with lib/par/par.o replaced
+# by par_mpi.o (the one file -DDEM_MPI changes), linked by mpicc: a minute
+# of CI less than compiling everything again (`make MPI=1` does that)
+MPICC    := $(if $(SAN)$(COMPILER)$(MPI_ON),,$(shell command -v mpicc 2>/dev/null))
+MPI_DIR  := build/rel-mpicheck
+MPI_LIB  := $(MPI_DIR)/libdem.a
+MPI_TESTS := test_fe_ranks
+MPI_ENV  = $(if $(MPICC),DEM_TEST_MPIBIN="$(abspath $(MPI_DIR)/bin)" \
+             DEM_TEST_MPITESTS="$(MPI_TESTS:%=$(abspath $(MPI_DIR)/tests)/%)")
+
 # check without make deps (the Debian package build runs this one)
-test: build $(TESTS) $(FUZZER)
-	@$(TEST_ENV) sh tests/run.sh "$(BUILD)/tests" "$(abspath $(BUILDBIN))" "$(SANITIZE)" \
+test: build $(TESTS) $(FUZZER) $(if $(MPICC),mpi-build)
+	@$(TEST_ENV) $(MPI_ENV) sh tests/run.sh "$(BUILD)/tests" "$(abspath $(BUILDBIN))" "$(SANITIZE)" \
 	  tests/cli tests/install/staged.bats
+
+mpi-build: $(MPI_DIR)/bin/demshot $(MPI_TESTS:%=$(MPI_DIR)/tests/%)
+
+ifneq ($(MPICC),)
+$(MPI_DIR)/par_mpi.o: lib/par/par_mpi.c
+	@mkdir -p $(@D)
+	$(MPICC) $(ALL_CFLAGS) -DDEM_MPI -MMD -MP -c $< -o $@
+
+$(MPI_LIB): $(filter-out $(BUILD)/lib/par/par.o,$(LIB_OBJ)) $(MPI_DIR)/par_mpi.o
+	rm -f $@ && ar rcs $@ $^
+
+$(MPI_DIR)/bin/demshot: $(BUILD)/cmd/demshot.o $(MPI_LIB)
+	@mkdir -p $(@D)
+	$(MPICC) $(ALL_LDFLAGS) $< $(MPI_LIB) $(LDLIBS) -o $@
+
+$(MPI_DIR)/tests/%: $(BUILD)/tests/unit/%.o $(MPI_LIB)
+	@mkdir -p $(@D)
+	$(MPICC) $(ALL_LDFLAGS) $< $(MPI_LIB) $(LDLIBS) -lcmocka -o $@
+
+-include $(MPI_DIR)/par_mpi.d
+endif
 
 demo: deps
 	@$(MAKE) --no-print-directory build

@@ -17,6 +17,15 @@
  * A scene with a `bodies` section is a DE-only run instead (Ch. 4): rigid
  * 2D superquadrics, polygons or disks with walls and gravity, no block
  * (lib/body); it writes the body stream, frames evenly spaced.
+ *
+ * Built with `make MPI=1` and started by mpirun, the 3D block runs on the
+ * ranks (lib/fe/explicit.h, "Ranks"): every rank reads the scene and
+ * builds the whole model; rank 0 reads the shot stream and sends each pass
+ * to the others, which integrate the same shots; rank 0 alone writes the
+ * outputs, the checkpoints and the messages (the others are silent), after
+ * gathering the fields at each frame.  Points where only rank 0 can fail
+ * (its streams and files) end with every rank agreeing on the outcome, so
+ * no rank waits for one that has stopped.
  */
 #include <errno.h>
 #include <math.h>
@@ -46,6 +55,7 @@
 #include "io/scene.h"
 #include "io/state.h"
 #include "io/vtu.h"
+#include "par/par.h"
 #include "shot/shotset.h"
 #include "shot/shotset2d.h"
 
@@ -510,6 +520,7 @@ static void fields_free(struct fields *f)
 /* The block's model and its shots: the 3D ones (fe, S) or the 2D ones
  * (fe2, S2); the calls below take the one there is. */
 struct blk {
+	dem_par_t *par;         /* the ranks (NULL or one: this process) */
 	dem_fe_t *fe;
 	dem_shotset_t *S;
 	dem_fe2_t *fe2;
@@ -563,9 +574,15 @@ static int blk_load(struct blk *b, FILE *f, dem_error_t *e)
 	return b->fe2 ? dem_fe2_load(b->fe2, f, e) : dem_fe_load(b->fe, f, e);
 }
 
+/* The fields of the last state; with several ranks every rank's part is
+ * gathered first (collective), and rank 0 alone, which writes them, fills
+ * f. */
 static void fields_get(const struct blk *b, struct fields *f)
 {
 	if (!b->fe2) {
+		dem_fe_sync(b->fe);
+		if (dem_par_rank(b->par) != 0)
+			return;
 		dem_fe_displacements(b->fe, f->u);
 		dem_fe_fields(b->fe, f->sig, f->eps, f->ep);
 		return;
@@ -616,6 +633,23 @@ static void sh_stats(const struct blk *b, dem_shotset_stats_t *ss)
 		dem_shotset2d_stats(b->S2, ss);
 	else
 		dem_shotset_stats(b->S, ss);
+}
+
+/* With several ranks, after a step that only rank 0 can fail (its
+ * streams and files): every rank returns the worst code. */
+static int agree(dem_par_t *p, int rc, dem_error_t *e)
+{
+	if (dem_par_size(p) == 1)
+		return rc;
+	int m = dem_par_max_int(p, rc);
+	if (m && !rc)
+		return dem_error_set(e, m, "rank 0 failed");
+	return m;
+}
+
+static int root(const struct blk *b)
+{
+	return dem_par_rank(b->par) == 0;
 }
 
 static int open_state(const struct cmdline *cl, const struct settings *st,
@@ -684,8 +718,9 @@ static int run(struct blk *b, const struct settings *st, int quiet,
 				return rc;
 			double t0 = dem_wall();
 			fields_get(b, f);
-			if ((rc = dem_state_write_frame(w, 1, dem_fe_time(fe), f->u,
-							f->sig, f->eps, f->ep, e)))
+			rc = root(b) ? dem_state_write_frame(w, 1, dem_fe_time(fe), f->u,
+							     f->sig, f->eps, f->ep, e) : 0;
+			if ((rc = agree(b->par, rc, e)))
 				return rc;
 			twrite += dem_wall() - t0;
 			k++;
@@ -795,6 +830,31 @@ static int shotin_pass(struct shotin *in, dem_error_t *e)
 		in->crc = crc32(in->crc, (const Bytef *)v, sizeof v);
 		in->rows++;
 	}
+}
+
+/* The next pass on every rank: rank 0 reads it (shotin_pass) and sends
+ * it to the others. */
+static int shots_next(const struct blk *b, struct shotin *in, dem_error_t *e)
+{
+	int k = root(b) ? shotin_pass(in, e) : 0;
+	if (dem_par_size(b->par) == 1)
+		return k;
+	long hd[3] = {k, k < 0 ? e->code : 0, (long)in->n};
+	dem_par_bcast(b->par, hd, sizeof hd, 0);
+	if (hd[0] < 0) {
+		if (!root(b))
+			dem_error_set(e, (int)hd[1], "rank 0 failed reading the shots");
+		return -1;
+	}
+	if (!root(b) && (size_t)hd[2] > in->cap) {
+		dem_shot_t *q = realloc(in->sh, (size_t)hd[2] * sizeof *q);
+		if (!q)   /* the other ranks would wait for this one */
+			dem_par_abort(b->par, DEM_EIO);
+		in->sh = q, in->cap = (size_t)hd[2];
+	}
+	in->n = (size_t)hd[2];
+	dem_par_bcast(b->par, in->sh, in->n * sizeof *in->sh, 0);
+	return (int)hd[0];
 }
 
 static void shotin_close(struct shotin *in)
@@ -1152,7 +1212,7 @@ static int run_pass(struct blk *b, const struct settings *st,
 {
 	double t0 = blk_time(b), peak = 0;
 	unsigned pass = (unsigned)in->sh[0].pass;
-	int rc;
+	int rc, wrc = 0;   /* several ranks: rank 0's write error, for the pass's end */
 
 	if ((rc = sh_begin(b, in->n, in->sh, e)))
 		return rc;
@@ -1160,16 +1220,17 @@ static int run_pass(struct blk *b, const struct settings *st,
 		double dt, t = blk_time(b);
 		if ((rc = sh_prepare(b, &dt, e)) || (rc = blk_step(b, dt, e)))
 			return rc;
-		if (fw) {
-			for (size_t i = 0; i < sh_count(b); i++) {
+		if (fw && !wrc) {
+			for (size_t i = 0; i < sh_count(b) && !wrc; i++) {
 				const dem_shot_body_t *s = sh_body(b, i);
 				if (!s->contacts)
 					continue;
 				/* 2D: the plane is the stream's x-z plane */
 				double row[8] = {pass, (double)i, t - t0, s->Fn, s->Ft, s->F[0],
 						 b->fe2 ? 0 : s->F[1], s->F[b->fe2 ? 1 : 2]};
-				if ((rc = dem_writer_row(fw, row, e)) || (rc = ck_force(ck, row, e)))
-					return rc;
+				if ((wrc = dem_writer_row(fw, row, e)) || (wrc = ck_force(ck, row, e)))
+					if (dem_par_size(b->par) == 1)
+						return wrc;
 			}
 		}
 		dem_fe_energy_t en;
@@ -1199,9 +1260,10 @@ static int run_pass(struct blk *b, const struct settings *st,
 		}
 	}
 	fields_get(b, f);
-	if ((rc = dem_state_write_frame(w, pass, blk_time(b), f->u, f->sig, f->eps, f->ep, e)))
-		return rc;
-	return ck_frame(ck, &st->mesh, pass, blk_time(b), f, e);
+	if (root(b) && !(rc = wrc) &&
+	    !(rc = dem_state_write_frame(w, pass, blk_time(b), f->u, f->sig, f->eps, f->ep, e)))
+		rc = ck_frame(ck, &st->mesh, pass, blk_time(b), f, e);
+	return agree(b->par, rc, e);
 }
 
 static int run_shots(struct blk *b, const struct settings *st,
@@ -1210,16 +1272,19 @@ static int run_shots(struct blk *b, const struct settings *st,
 {
 	double next_report = dem_wall() + 2;
 	int k, rc;
+	/* rank 0 alone keeps the checkpoint; every rank agrees on its saves */
+	int saving = dem_par_max_int(b->par, ck != NULL);
 
 	/* *passes: those done before (a resumed run) */
-	while ((k = shotin_pass(in, e)) > 0) {
+	while ((k = shots_next(b, in, e)) > 0) {
 		if ((rc = run_pass(b, st, in, quiet, w, fw, f, ck, &next_report, e)))
 			return rc;
 		++*passes;
 		if (!quiet)
 			fprintf(stderr, "%s: pass %lu done at t = %.4g s\n", PROG,
 				in->sh[0].pass, blk_time(b));
-		if (ck && (rc = ck_save(ck, b, in, *passes, e)))
+		/* the model was gathered for the frame: rank 0 holds it all */
+		if (saving && (rc = agree(b->par, ck ? ck_save(ck, b, in, *passes, e) : 0, e)))
 			return rc;
 		if (ck && ck->stop_after == *passes) {
 			/* the testing aid: die as a killed run would, leaving
@@ -1233,7 +1298,7 @@ static int run_shots(struct blk *b, const struct settings *st,
 	if (k < 0)
 		return e->code;
 	if (*passes == 0)
-		return dem_error_set(e, DEM_EINPUT, "%s: no shots", dem_reader_name(in->r));
+		return dem_error_set(e, DEM_EINPUT, "%s: no shots", root(b) ? dem_reader_name(in->r) : "shots");
 	return DEM_OK;
 }
 
@@ -1339,6 +1404,12 @@ static int open_shots(const struct cmdline *cl, struct job *j, dem_error_t *e)
 		return dem_error_set(e, DEM_EINPUT, "%s", msg);
 	}
 	j->have_in = 1;
+	if (dem_par_rank(j->b.par) != 0) {
+		/* rank 0 reads the stream (shots_next) */
+		memset(&j->in, 0, sizeof j->in);
+		j->in.pass = -1;
+		return DEM_OK;
+	}
 	if ((rc = shotin_open(&j->in, cl->shots && strcmp(cl->shots, "-") ? cl->shots : NULL, e)))
 		return rc;
 	const char *a = dem_header_get(dem_reader_header(j->in.r), "area");
@@ -1393,6 +1464,7 @@ static int build(const struct cmdline *cl, struct job *j, double t0, dem_cost_t 
 
 	if (st->dim == 2 && (rc = build2(j, e)))
 		return rc;
+	st->fe.par = j->b.par;
 	if (st->dim == 3 &&
 	    ((rc = dem_fe_create(&j->b.fe, &st->mesh, &st->mat, &st->fe, e)) ||
 	     (st->have_load && (rc = apply_load(j->b.fe, st, e)))))
@@ -1430,6 +1502,8 @@ static int open_outputs(const struct cmdline *cl, struct job *j, const dem_main_
 {
 	int rc;
 
+	if (dem_par_rank(j->b.par) != 0)
+		return DEM_OK;   /* rank 0 writes */
 	if ((rc = open_state(cl, &j->st, r->argc, r->args, &j->w, e)) ||
 	    (cl->forces && (rc = open_forces(cl->forces, r->argc, r->args, &j->fw, e))))
 		return rc;
@@ -1462,13 +1536,13 @@ static int run_job(const struct cmdline *cl, struct job *j, dem_cost_t *cost, de
 		return rc;
 	j->run_s = dem_wall() - t;
 	dem_cost_time(cost, "run", j->run_s);
-	rc = dem_state_writer_close(j->w, e);
+	rc = j->w ? dem_state_writer_close(j->w, e) : 0;
 	j->w = NULL;
 	if (!rc && j->fw) {
 		rc = dem_writer_close(j->fw, e);
 		j->fw = NULL;
 	}
-	if (rc)
+	if ((rc = agree(j->b.par, rc, e)))
 		return rc;
 	if (j->have_ck) {
 		dem_cost_time(cost, "checkpoint", j->ck.save_s);
@@ -1484,7 +1558,7 @@ static int run_job(const struct cmdline *cl, struct job *j, dem_cost_t *cost, de
 		ck_close(&j->ck, 1);
 		j->have_ck = 0;
 	}
-	if (cl->vtu)
+	if (cl->vtu && dem_par_rank(j->b.par) == 0)
 		return dem_vtu_write(cl->vtu, &st->mesh,
 				     &(dem_vtu_fields_t){j->f.u, j->f.sig, j->f.eps, j->f.ep}, 1, e);
 	return DEM_OK;
@@ -1511,6 +1585,13 @@ static void report(const struct cmdline *cl, const struct job *j, dem_cost_t *co
 			en.damping, en.external, en.balance);
 	dem_cost_time(cost, "element_loop", fs.elem_s);
 	dem_cost_time(cost, "node_loop", fs.node_s);
+	if (dem_par_size(j->b.par) > 1 && j->b.fe) {
+		/* rank 0's: its exchanges with the other ranks, and its bytes
+		 * sent a step (examples/cost: the communication model) */
+		dem_cost_time(cost, "exchange", fs.comm_s);
+		dem_cost_count(cost, "ranks", dem_par_size(j->b.par));
+		dem_cost_count(cost, "bytes_per_step", dem_fe_comm_bytes(j->b.fe));
+	}
 	dem_cost_count(cost, "steps", (double)fs.steps);
 	dem_cost_count(cost, "elements", (double)st->mesh.ne);
 	dem_cost_count(cost, "elem_cycles", fs.elem_cycles);
@@ -1619,30 +1700,67 @@ static int run_bodies(const struct cmdline *cl, struct job *j, const dem_main_t 
 	return DEM_OK;
 }
 
+/* What several ranks cannot run yet: the 2D block, the DE-only run, a
+ * resumed run (resume it with one rank: the checkpoint holds the whole
+ * model). */
+static int ranks_check(const struct cmdline *cl, const struct job *j, dem_error_t *e)
+{
+	int np = dem_par_size(j->b.par);
+	if (np == 1)
+		return DEM_OK;
+	if (j->bodies || j->st.dim == 2)
+		return dem_error_set(e, DEM_EUSAGE, "%s runs on one rank only, not %d (MPI: the 3D "
+				     "block alone)", j->bodies ? "a scene with bodies" : "the 2D block", np);
+	if (cl->resume)
+		return dem_error_set(e, DEM_EUSAGE, "--resume with %d ranks: not supported yet; "
+				     "resume with one (mpirun -np 1, or the serial demshot)", np);
+	return DEM_OK;
+}
+
 int main(int argc, char **argv)
 {
 	struct cmdline cl;
 	struct job j = {0};
 	dem_main_t r;
+	dem_par_t *par;
 	int rc;
 
-	if ((rc = dem_main_start(&r, PROG, argc, argv)))
+	dem_error_t pe = {0};
+	if ((rc = dem_par_init(&par, &argc, &argv, &pe))) {
+		fprintf(stderr, "%s: %s\n", PROG, pe.msg);
 		return rc;
-	if ((rc = parse_cmdline(argc, argv, &cl)) >= 0)
-		return dem_main_quit(&r, &cl.com, rc);
+	}
+	/* rank 0 speaks; the others write nothing (their failures show in
+	 * the exit status) */
+	if (dem_par_rank(par) != 0 &&
+	    (!freopen("/dev/null", "w", stdout) || !freopen("/dev/null", "w", stderr)))
+		dem_par_abort(par, DEM_EIO);
+	j.b.par = par;
+	if ((rc = dem_main_start(&r, PROG, argc, argv))) {
+		dem_par_finalize(par);
+		return rc;
+	}
+	if ((rc = parse_cmdline(argc, argv, &cl)) >= 0) {
+		rc = dem_main_quit(&r, &cl.com, rc);
+		dem_par_finalize(par);
+		return rc;
+	}
 #ifdef _OPENMP
 	if (cl.threads)
 		omp_set_num_threads((int)cl.threads);
 #endif
 	double t0 = dem_wall();
-	if (!(rc = get_settings(&cl, &j, &r.e)) && !cl.com.dump && j.bodies)
+	if (!(rc = get_settings(&cl, &j, &r.e)) && !(rc = ranks_check(&cl, &j, &r.e)) &&
+	    !cl.com.dump && j.bodies)
 		rc = run_bodies(&cl, &j, &r, &r.cost, &r.e);
 	else if (!rc && !cl.com.dump &&
-	    !(rc = open_shots(&cl, &j, &r.e)) &&
-	    !(rc = build(&cl, &j, t0, &r.cost, &r.e)) &&
-	    !(rc = open_outputs(&cl, &j, &r, &r.e)) &&
+	    !(rc = agree(par, open_shots(&cl, &j, &r.e), &r.e)) &&
+	    !(rc = agree(par, build(&cl, &j, t0, &r.cost, &r.e), &r.e)) &&
+	    !(rc = agree(par, open_outputs(&cl, &j, &r, &r.e), &r.e)) &&
 	    !(rc = run_job(&cl, &j, &r.cost, &r.e)))
 		report(&cl, &j, &r.cost);
 	job_free(&j, rc != 0);
-	return dem_main_end(&r, &cl.com, rc);
+	rc = dem_main_end(&r, &cl.com, rc);
+	dem_par_finalize(par);
+	return rc;
 }

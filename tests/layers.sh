@@ -10,7 +10,7 @@
 # describes it); cmd/ and tests/ sit on top of all of it.
 LAYERS='
 core
-mesh
+mesh par
 io contact detect
 fe pack body
 shot

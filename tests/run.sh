@@ -14,6 +14,9 @@
 # one file at a time each (--no-parallelize-within-files: a file's tests
 # may share what its setup_file made).  Every test writes under its own
 # temporary folder, so the order they run in does not matter.
+# DEM_TEST_MPITESTS: the unit test programs built on MPI, run under mpirun
+# (below); DEM_TEST_MPIBIN, the programs built on MPI, is for the bats
+# files (tests/cli/mpi.bats).
 testdir=$1 bindir=$2 sanitize=$3
 shift 3
 unset DEM_DATA
@@ -52,6 +55,26 @@ for t in $units; do
 		head -40 "$log/$name.err" >&2
 	fi
 done
+# the MPI unit tests (DEM_TEST_MPITESTS, make check's when
+# mpicc is installed) under mpirun on 2 and 4 ranks, 4 oversubscribed (one
+# rank is the plain build's run of the same test: the one-rank code path);
+# rank 0 writes the TAP, a failure on any rank fails the run
+if [ -n "${DEM_TEST_MPITESTS:-}" ] && command -v mpirun > /dev/null; then
+	if [ "$(id -u)" = 0 ]; then
+		export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+	fi
+	for t in $DEM_TEST_MPITESTS; do
+		for np in 2 4; do
+			name=mpi-np$np-$(basename "$t")
+			if ! timeout 300 mpirun -np $np --oversubscribe "$t" > "$log/$name.tap" 2> "$log/$name.err"; then
+				status=1
+				echo "unit: $name: FAILED" >&2
+				grep -v '^ok ' "$log/$name.tap" | head -40 >&2
+				head -40 "$log/$name.err" >&2
+			fi
+		done
+	done
+fi
 # the readers' fuzzing harness over its corpus (tests/fuzz: the seeds and
 # every input a fuzz run found to crash): no input may crash a reader
 fz=${testdir:+$testdir/fuzz-readers}

@@ -1,9 +1,10 @@
 #!/bin/sh
 # deps.sh [PACKAGE...] - install the Debian packages the toolkit needs, and
 # the PACKAGEs named (CI: lintian), or say how.  debhelper is for the
-# Debian package (make deb, dpkg-buildpackage).
+# Debian package (make deb, dpkg-buildpackage); OpenMPI for the MPI build
+# (make MPI=1), which make check then tests too.
 # Quick when everything is there: one dpkg-query call.
-pkgs="build-essential pkg-config man-db libgsl-dev libyaml-dev zlib1g-dev libsuitesparse-dev libopenblas0-pthread libcmocka-dev bats parallel gnuplot-nox valgrind debhelper $*"
+pkgs="build-essential pkg-config man-db libgsl-dev libyaml-dev zlib1g-dev libsuitesparse-dev libopenblas0-pthread libcmocka-dev bats parallel gnuplot-nox valgrind debhelper libopenmpi-dev openmpi-bin $*"
 missing=""
 for p in $pkgs; do
 	st=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null)

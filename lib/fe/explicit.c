@@ -148,8 +148,24 @@ struct dem_fe {
 	int failed;
 	dem_error_t fail;
 	/* counters */
-	double cycles, nplastic, elem_s, node_s;
+	double cycles, nplastic, elem_s, node_s, comm_s;
+	/* ranks (explicit.h, "Ranks"): this one runs slabs [s0, s1), updates
+	 * nodes [nu0, nu1) and owns [noff[rank], noff[rank + 1]) for the sums
+	 * and dem_fe_sync; soff, noff, boff: per rank, size + 1 offsets of
+	 * slabs, nodes and element state (one-point blocks, or elements) */
+	dem_par_t *par;
+	int rank, nrank, s0, s1;
+	size_t plane, nu0, nu1;
+	size_t *soff, *noff, *boff;
+	double *pbuf;         /* scratch of the halo */
+	double *grec;         /* the ranks' records (ranks_exchange), rank r's
+			       * at goff[r] */
+	size_t *goff;
+	double comm;          /* bytes sent in the last step */
 };
+
+/* a slab's record for the other ranks: its sums, dt2 and bad */
+#define SREC (E_N + 2)
 
 void dem_fe_opts_default(dem_fe_opts_t *o)
 {
@@ -213,6 +229,7 @@ void dem_fe_free(dem_fe_t *fe)
 	free(fe->kin), free(fe->syc);
 	free(fe->run);
 	free(fe->slab), free(fe->slab_of_k), free(fe->band_of_j), free(fe->order);
+	free(fe->soff), free(fe->noff), free(fe->boff), free(fe->pbuf), free(fe->grec), free(fe->goff);
 	for (int i = 0; i < fe->npl; i++)
 		free(fe->pl[i].quad), free(fe->pl[i].t), free(fe->pl[i].p);
 	free(fe->pl);
@@ -255,6 +272,8 @@ static void tie_gather(dem_fe_t *fe)
 	const uint32_t *tie = fe->mesh->tie;
 	for (size_t t = 0; t < fe->ntie; t++) {
 		size_t s = 3 * (size_t)tie[2 * t], ms = 3 * (size_t)tie[2 * t + 1];
+		if (tie[2 * t] < fe->nu0 || tie[2 * t] >= fe->nu1)
+			continue;   /* another rank's plane */
 		for (int c = 0; c < 3; c++) {
 			fe->fi[ms + c] += fe->fi[s + c];
 			fe->fi[s + c] = 0;
@@ -272,6 +291,8 @@ static void tie_scatter(dem_fe_t *fe)
 	const uint32_t *tie = fe->mesh->tie;
 	for (size_t t = 0; t < fe->ntie; t++) {
 		size_t s = 3 * (size_t)tie[2 * t], ms = 3 * (size_t)tie[2 * t + 1];
+		if (tie[2 * t] < fe->nu0 || tie[2 * t] >= fe->nu1)
+			continue;
 		for (int c = 0; c < 3; c++) {
 			fe->v[s + c] = fe->v[ms + c];
 			fe->x[s + c] = fe->x[ms + c] + fe->toff[3 * t + c];
@@ -285,6 +306,55 @@ static void syc_reset(dem_fe_t *fe)
 {
 	for (size_t i = 0; i < fe->npt; i++)
 		fe->syc[i] = fe->mat->sy_floor;
+}
+
+/* The ranks' shares (explicit.h, "Ranks"): contiguous ranges of slabs,
+ * bottom to top; each rank owns the node planes from the lowest of its
+ * slabs up to, not including, the next rank's (the top rank: to the top).
+ * Returns DEM_EINPUT with e set, or -1 out of memory. */
+static int ranks_setup(dem_fe_t *fe, dem_error_t *e)
+{
+	const dem_mesh_t *m = fe->mesh;
+	dem_par_t *p = fe->o.par;
+	int P = dem_par_size(p), nb = fe->nband, ns = fe->nslab / nb;  /* layer groups */
+	fe->par = p;
+	fe->nrank = P;
+	fe->rank = dem_par_rank(p);
+	fe->plane = (size_t)(m->nx + 1) * (size_t)(m->ny + 1);
+	if (P > ns)
+		return dem_error_set(e, DEM_EINPUT, "explicit: %d ranks for %d slabs of element layers "
+				     "(a rank needs one at least: the mesh has %d layers)", P, ns, m->nz);
+	fe->soff = malloc((size_t)(P + 1) * sizeof *fe->soff);
+	fe->noff = malloc((size_t)(P + 1) * sizeof *fe->noff);
+	fe->boff = malloc((size_t)(P + 1) * sizeof *fe->boff);
+	fe->goff = malloc((size_t)(P + 1) * sizeof *fe->goff);
+	fe->pbuf = malloc(2 * 3 * fe->plane * sizeof *fe->pbuf);
+	if (!fe->soff || !fe->noff || !fe->boff || !fe->goff || !fe->pbuf)
+		return -1;
+	int full = fe->o.rule == DEM_FE_FULL;
+	for (int r = 0; r <= P; r++) {
+		int s = (int)((long)r * ns / P) * nb;  /* whole layer groups: planes between ranks */
+		fe->soff[r] = (size_t)s;
+		fe->noff[r] = r == P ? fe->nn : (size_t)fe->slab[s].k0 * fe->plane;
+		fe->boff[r] = r == P ? (full ? fe->ne : fe->nblk) : full ? fe->slab[s].e0 : fe->slab[s].b0;
+	}
+	/* the records of ranks_exchange */
+	fe->goff[0] = 0;
+	for (int r = 0; r < P; r++)
+		fe->goff[r + 1] = fe->goff[r] + (fe->soff[r + 1] - fe->soff[r]) * SREC +
+				  DEM_CD_N + (r == P - 1 ? 6 * fe->plane : 0);
+	if (!(fe->grec = malloc(fe->goff[P] * sizeof *fe->grec)))
+		return -1;
+	fe->s0 = (int)fe->soff[fe->rank];
+	fe->s1 = (int)fe->soff[fe->rank + 1];
+	fe->nu0 = fe->noff[fe->rank];
+	fe->nu1 = (size_t)(fe->slab[fe->s1 - 1].k1 + 1) * fe->plane;
+	if (P > 1)
+		for (size_t t = 0; t < m->ntie; t++)
+			if (m->tie[2 * t] / fe->plane != m->tie[2 * t + 1] / fe->plane)
+				return dem_error_set(e, DEM_EINPUT, "explicit: with several ranks, periodic ties "
+						     "must tie nodes of one x-y plane (tie %zu does not)", t);
+	return 0;
 }
 
 int dem_fe_create(dem_fe_t **out, const dem_mesh_t *mesh, const dem_mat_t *mat,
@@ -321,10 +391,13 @@ int dem_fe_create(dem_fe_t **out, const dem_mesh_t *mesh, const dem_mat_t *mat,
 	fe->nthr = o->threads > 0 ? o->threads : ne >= PAR_MIN ? omp_get_max_threads() : 1;
 
 	/* slabs: groups of whole layers, or in a thin mesh bands of rows of
-	 * each layer, enough for MINTASK slabs to a colour */
+	 * each layer, enough for MINTASK slabs to a colour; more ranks than
+	 * MAXSLAB: a group each (the serial slabs, and those of up to MAXSLAB
+	 * ranks, do not depend on the ranks) */
 	int nz = mesh->nz, ny = mesh->ny;
 	size_t nx = (size_t)mesh->nx;
-	int ngrp = nz < MAXSLAB ? nz : MAXSLAB, nband = 1;
+	int np = dem_par_size(o->par), ms = np > MAXSLAB ? np : MAXSLAB;
+	int ngrp = nz < ms ? nz : ms, nband = 1;
 	if (nz < MINLAYER) {
 		int half = (nz + 1) / 2;
 		nband = 2 * ((MINTASK + half - 1) / half);
@@ -367,6 +440,13 @@ int dem_fe_create(dem_fe_t **out, const dem_mesh_t *mesh, const dem_mat_t *mat,
 				fe->order[no++] = s;
 	}
 	fe->coff[4] = no;
+	int rrc = ranks_setup(fe, e);
+	if (rrc < 0)
+		goto nomem;
+	if (rrc) {
+		dem_fe_free(fe);
+		return rrc;
+	}
 
 	fe->x = malloc(3 * nn * sizeof *fe->x);
 	fe->v = calloc(3 * nn, sizeof *fe->v);
@@ -481,10 +561,15 @@ int dem_fe_add_pressure(dem_fe_t *fe, size_t nquad, const uint32_t *quad,
 {
 	if (dem_cd_table_check(nt, t, p, e))
 		return e->code;
-	for (size_t q = 0; q < 4 * nquad; q++)
+	for (size_t q = 0; q < 4 * nquad; q++) {
 		if (quad[q] >= fe->nn)
 			return dem_error_set(e, DEM_EINPUT, "pressure: face %zu names node %u of %zu",
 					     q / 4, quad[q], fe->nn);
+		/* explicit.h, "Ranks": only the top surface is current on every rank */
+		if (fe->nrank > 1 && fe->o.large && quad[q] / fe->plane != (size_t)fe->mesh->nz)
+			return dem_error_set(e, DEM_EINPUT, "pressure: face %zu is not on the top surface: "
+					     "with several ranks, a large-strain pressure must be", q / 4);
+	}
 	pload_t *pl = realloc(fe->pl, (size_t)(fe->npl + 1) * sizeof *pl);
 	if (!pl)
 		return dem_error_nomem(e, "pressure load");
@@ -677,14 +762,33 @@ static inline __attribute__((always_inline)) void node_range(dem_fe_t *fe, const
 	sum[DEM_CD_WDB] = 0.5 * wdb;
 }
 
+static inline __attribute__((always_inline)) void node_part(dem_fe_t *fe, const dem_cd_coef_t *c, size_t n0,
+							     size_t n1, double sum[DEM_CD_N])
+{
+	if (n0 >= n1) {
+		memset(sum, 0, DEM_CD_N * sizeof *sum);
+		return;
+	}
+	if (fe->ext && n0 < fe->xhi && fe->xlo < n1)
+		node_range(fe, c, n0, n1, sum, 1);
+	else
+		node_range(fe, c, n0, n1, sum, 0);
+}
+
 SIMD_CLONES
 static void node_chunk(dem_fe_t *fe, const dem_cd_coef_t *c, int ch)
 {
 	size_t n0 = fe->nn * (size_t)ch / NCHUNK, n1 = fe->nn * (size_t)(ch + 1) / NCHUNK;
-	if (fe->ext && n0 < fe->xhi && fe->xlo < n1)
-		node_range(fe, c, n0, n1, fe->chunk[ch], 1);
-	else
-		node_range(fe, c, n0, n1, fe->chunk[ch], 0);
+	if (fe->nrank > 1) {
+		/* the nodes this rank updates: its own, summed, then the plane
+		 * it shares with the rank above, whose sums are that rank's */
+		size_t o1 = fe->noff[fe->rank + 1];
+		double junk[DEM_CD_N];
+		node_part(fe, c, n0 > fe->nu0 ? n0 : fe->nu0, n1 < o1 ? n1 : o1, fe->chunk[ch]);
+		node_part(fe, c, n0 > o1 ? n0 : o1, n1 < fe->nu1 ? n1 : fe->nu1, junk);
+		return;
+	}
+	node_part(fe, c, n0, n1, fe->chunk[ch]);
 }
 
 /* ---- Element loops ---------------------------------------------------------- */
@@ -1047,6 +1151,78 @@ static void slab_run(dem_fe_t *fe, slab_t *s, double dt)
 
 /* ---- The step -------------------------------------------------------------- */
 
+/* After the element loop, with several ranks (explicit.h, "Ranks"): the
+ * forces on the shared planes (the halo), then one gather of every rank's
+ * record: its slabs' sums, its nodes' sums and, from the top rank,
+ * the top surface's coordinates and velocities.  fx is cleared where the
+ * loads wrote to other ranks' nodes. */
+static void ranks_exchange(dem_fe_t *fe)
+{
+	size_t np = 3 * fe->plane, d = sizeof(double);
+	int top = fe->nrank - 1;
+	if (fe->ext) {
+		memset(fe->fx, 0, 3 * fe->nu0 * d);
+		memset(fe->fx + 3 * fe->nu1, 0, 3 * (fe->nn - fe->nu1) * d);
+	}
+	double *lo = fe->rank > 0 ? fe->fi + 3 * fe->nu0 : NULL;
+	double *hi = fe->rank < top ? fe->fi + 3 * fe->nu1 - np : NULL;
+	dem_par_halo_sum(fe->par, lo, hi, np, fe->pbuf);
+	fe->comm = (double)((size_t)((lo != NULL) + (hi != NULL)) * np * d);
+
+	/* this rank's record: slabs, chunks, the top surface */
+	double *g = fe->grec + fe->goff[fe->rank];
+	for (int s = fe->s0; s < fe->s1; s++, g += SREC) {
+		const slab_t *sl = &fe->slab[s];
+		memcpy(g, sl->sum, E_N * d);
+		g[E_N] = sl->dt2;
+		g[E_N + 1] = (double)sl->bad;
+	}
+	/* the node chunks' sums, added in chunk order */
+	for (int k = 0; k < DEM_CD_N; k++)
+		g[k] = 0;
+	for (int ch = 0; ch < NCHUNK; ch++)
+		for (int k = 0; k < DEM_CD_N; k++)
+			g[k] += fe->chunk[ch][k];
+	g += DEM_CD_N;
+	size_t t0 = 3 * (fe->nn - fe->plane);
+	if (fe->rank == top) {
+		memcpy(g, fe->x + t0, np * d);
+		memcpy(g + np, fe->v + t0, np * d);
+	}
+	dem_par_gather(fe->par, fe->grec, d, fe->goff);
+	fe->comm += (double)((fe->goff[fe->rank + 1] - fe->goff[fe->rank]) * d);
+
+	/* every rank's records, in rank order: the node sums added so (into
+	 * the first chunk, for energy_at_tn) */
+	memset(fe->chunk, 0, sizeof fe->chunk);
+	for (int r = 0; r <= top; r++) {
+		g = fe->grec + fe->goff[r];
+		for (int s = (int)fe->soff[r]; s < (int)fe->soff[r + 1]; s++, g += SREC) {
+			slab_t *sl = &fe->slab[s];
+			memcpy(sl->sum, g, E_N * d);
+			sl->dt2 = g[E_N];
+			sl->bad = (size_t)g[E_N + 1];
+		}
+		for (int k = 0; k < DEM_CD_N; k++)
+			fe->chunk[0][k] += g[k];
+		g += DEM_CD_N;
+		if (r == top && fe->rank != top) {
+			memcpy(fe->x + t0, g, np * d);
+			memcpy(fe->v + t0, g + np, np * d);
+		}
+	}
+}
+
+/* The energies at t_n from the node chunks' sums. */
+static void energy_at_tn(dem_fe_t *fe, double tn)
+{
+	double sum[DEM_CD_N] = { 0 };
+	for (int ch = 0; ch < NCHUNK; ch++)
+		for (int k = 0; k < DEM_CD_N; k++)
+			sum[k] += fe->chunk[ch][k];
+	dem_cd_energy(&fe->w, fe->steps, tn, sum, &fe->en);
+}
+
 int dem_fe_step(dem_fe_t *fe, double dt, dem_error_t *e)
 {
 	if (fe->failed)
@@ -1086,25 +1262,31 @@ int dem_fe_step(dem_fe_t *fe, double dt, dem_error_t *e)
 		tie_scatter(fe);
 	double w1 = dem_wall();
 
-	/* energies at t_n */
-	double sum[DEM_CD_N] = { 0 };
-	for (int ch = 0; ch < NCHUNK; ch++)
-		for (int k = 0; k < DEM_CD_N; k++)
-			sum[k] += fe->chunk[ch][k];
-	dem_cd_energy(&fe->w, fe->steps, tn, sum, &fe->en);
+	/* energies at t_n (several ranks: once their sums are in, below) */
+	if (fe->nrank == 1)
+		energy_at_tn(fe, tn);
 
-	/* 4. elements on x_{n+1}: the slabs colour by colour */
+	/* 4. elements on x_{n+1}: the slabs colour by colour (several
+	 * ranks: this rank's, [s0, s1)) */
+	int s0 = fe->s0, s1 = fe->s1;
 #pragma omp parallel num_threads(nthr) if (nthr > 1)
 	for (int c = 0; c < 4; c++) {
 		if (fe->coff[c] == fe->coff[c + 1])
 			continue;
 #pragma omp for schedule(dynamic, 1)
 		for (int o = fe->coff[c]; o < fe->coff[c + 1]; o++)
-			slab_run(fe, &fe->slab[fe->order[o]], dt);
+			if (fe->order[o] >= s0 && fe->order[o] < s1)
+				slab_run(fe, &fe->slab[fe->order[o]], dt);
 	}
 	double w2 = dem_wall();
+	if (fe->nrank > 1) {
+		ranks_exchange(fe);
+		energy_at_tn(fe, tn);
+	}
+	double w3 = dem_wall();
 	fe->node_s += w1 - w0;
 	fe->elem_s += w2 - w1;
+	fe->comm_s += w3 - w2;
 
 	size_t bad = 0;
 	double dt2 = INFINITY;
@@ -1250,6 +1432,38 @@ void dem_fe_stats(const dem_fe_t *fe, dem_fe_stats_t *s)
 	s->plastic_updates = fe->nplastic;
 	s->elem_s = fe->elem_s;
 	s->node_s = fe->node_s;
+	s->comm_s = fe->comm_s;
+}
+
+double dem_fe_comm_bytes(const dem_fe_t *fe)
+{
+	return fe->nrank > 1 ? fe->comm : 0;
+}
+
+void dem_fe_sync(dem_fe_t *fe)
+{
+	if (fe->nrank < 2)
+		return;
+	size_t d = sizeof(double), nh = (size_t)fe->nh;
+	int full = fe->o.rule == DEM_FE_FULL;
+	dem_par_t *p = fe->par;
+	dem_par_gather(p, fe->x, 3 * d, fe->noff);
+	dem_par_gather(p, fe->v, 3 * d, fe->noff);
+	dem_par_gather(p, fe->fi, 3 * d, fe->noff);
+	/* element state: per one-point block, or per element */
+	size_t u = full ? 2 * NB : NB;
+	dem_par_gather(p, fe->sig, 6 * u * d, fe->boff);
+	dem_par_gather(p, fe->ep, u * d, fe->boff);
+	if (fe->kin)
+		dem_par_gather(p, fe->kin, nh * u * d, fe->boff);
+	if (fe->Qs)
+		dem_par_gather(p, fe->Qs, 12 * NB * d, fe->boff);
+	if (fe->eps)
+		dem_par_gather(p, fe->eps, (full ? 6 : 6 * NB) * d, fe->boff);
+	if (fe->kdt)
+		dem_par_gather(p, fe->kdt, (full ? 1 : NB) * d, fe->boff);
+	if (fe->syc)
+		dem_par_gather(p, fe->syc, u * d, fe->boff);
 }
 
 /* ---- Checkpoint ------------------------------------------------------------- */

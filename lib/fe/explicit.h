@@ -94,6 +94,37 @@
  * chunks, added in order): results are bitwise identical for any number
  * of threads.
  *
+ * Ranks (issue 22; lib/par/par.h, MPI with `make MPI=1`).  With a group
+ * of P ranks in opts.par, every rank holds the whole mesh and every node
+ * and element array (replicated data: the memory is not distributed), but
+ * runs only its own contiguous range of the slabs above, ranks bottom to
+ * top, and updates only the nodes its elements touch.  After the element
+ * loop each rank adds its neighbours' internal forces on the node plane
+ * it shares with each (dem_par_halo_sum, the lower rank's part first: both
+ * ranks hold the same bits); then one gather brings every rank's record:
+ * its slabs' element sums (added in slab order, as one rank does), its
+ * nodes' sums (kinetic energy, work; added in rank order) and, from the
+ * top rank, the
+ * coordinates and velocities of the top surface (z = gz[nz]).  Time step,
+ * energies and failures are then the same on every rank, and the load
+ * hook and dem_fe_coords()/dem_fe_velocity() see the top surface current
+ * on every rank: a hook that reads only the top surface
+ * (lib/shot/shotset.c) runs the same on every rank, its forces on other
+ * ranks' nodes dropped.  Two messages a step to each neighbour and one
+ * gather, whatever the mesh.  Why slabs along z: they are the
+ * slabs of the threads already (contiguous element and node ranges, a
+ * shared plane is one contiguous range of nodes), the top surface, where
+ * the shots act, is then on one rank only, and the hook stays serial code;
+ * the price is that P cannot exceed the number of slabs (min(nz, 32), or
+ * nz when P > 32) and that the interface is a whole x-y plane.  One rank
+ * gives the serial result to the bit; more ranks differ by the order of
+ * the additions on the shared planes (round-off).  Other nodes and
+ * elements hold stale values on a rank: dem_fe_sync() gathers everything
+ * on every rank before the state is read (displacements, fields,
+ * checkpoint).  Pressures on faces that are not top-surface faces, in
+ * large strain, need coordinates a rank may not hold: refused.  Periodic
+ * ties must tie nodes of one plane (the x and y sides).
+ *
  * A failed step (inverted element) returns DEM_ENUMERIC naming the element,
  * its grid indices and the time; the state keeps finite values (the blocks
  * with a bad element keep their previous element state) and further steps
@@ -109,6 +140,7 @@
 #include "core/error.h"
 #include "fe/material.h"
 #include "mesh/mesh.h"
+#include "par/par.h"
 
 typedef enum dem_fe_rule {
 	DEM_FE_1PT = 0,   /* one point + Flanagan-Belytschko hourglass control */
@@ -135,6 +167,8 @@ typedef struct dem_fe_opts {
 			     * step of a small mesh is shorter than the cost of
 			     * waking threads, and on a busy machine a thread
 			     * descheduled at a barrier stalls the others) */
+	dem_par_t *par;     /* the ranks that share the model (see "Ranks"
+			     * above); NULL: this process alone */
 } dem_fe_opts_t;
 
 /* Defaults: DEM_FE_1PT, small strain, dt_factor 0.9, no damping,
@@ -204,6 +238,16 @@ int dem_fe_step(dem_fe_t *fe, double dt, dem_error_t *e);
 
 /* ---- State ------------------------------------------------------------- */
 
+/* With several ranks (opts.par): every rank gets every rank's nodes and
+ * elements, so that everything below reads the whole current state.  Does
+ * not change the run that follows.  Collective; nothing with one rank. */
+void dem_fe_sync(dem_fe_t *fe);
+
+/* The bytes this rank sent in the last step: its halo planes and its
+ * record in the gather (the top surface, on the top rank), for the
+ * communication model of examples/cost; 0 with one rank. */
+double dem_fe_comm_bytes(const dem_fe_t *fe);
+
 double dem_fe_time(const dem_fe_t *fe);
 long dem_fe_steps(const dem_fe_t *fe);
 
@@ -241,11 +285,12 @@ void dem_fe_energy(const dem_fe_t *fe, dem_fe_energy_t *en);
 
 /* Work counters: steps, element updates (cycles), plastic element (or
  * Gauss point) updates, and the seconds spent in the element and node
- * loops (wall clock). */
+ * loops (wall clock), and in the exchanges between ranks. */
 typedef struct dem_fe_stats {
 	long steps;
 	double elem_cycles, plastic_updates;
 	double elem_s, node_s;
+	double comm_s;      /* with several ranks: in the exchanges (waits included) */
 } dem_fe_stats_t;
 
 void dem_fe_stats(const dem_fe_t *fe, dem_fe_stats_t *s);
