@@ -4,7 +4,7 @@
 #   make check      build and run every test; ends with "N passed, N failed"
 #   make check SANITIZE=1   the same under AddressSanitizer and UBSan
 #   make check CC=clang     the same built by clang (in build/rel-clang)
-#   make MPI=1      the programs on MPI (mpicc, -DDEM_MPI; in build/rel-mpi,
+#   make MPI=1      the programs on MPI (-DDEM_MPI and mpicc --showme flags, any CC; in build/rel-mpi,
 #                   lib/par/par_mpi.c for lib/par/par.c); make check links
 #                   demshot so (build/rel-mpicheck) and runs the MPI tests
 #                   too when mpicc is installed (test_fe_ranks under mpirun,
@@ -61,20 +61,23 @@ endif
 # MPI=1: the build on MPI beside the others (explicit.h, "Ranks")
 MPI_ON   := $(filter 1,$(MPI))
 ifeq ($(MPI_ON),1)
-CC       := mpicc
 BUILD    := $(BUILD)-mpi
 endif
+# OpenMPI's own flags (mpicc --showme), given to whichever CC builds: gcc
+# and clang alike compile lib/par/par_mpi.c
+MPI_CFLAGS = $(shell mpicc --showme:compile 2>/dev/null)
+MPI_LIBS   = $(shell mpicc --showme:link 2>/dev/null)
 ifeq ($(COMPILER),clang)
 # valgrind 3.19 (Debian 12) does not read clang's default DWARF 5
 OPT      += -gdwarf-4
 endif
 
 DEM_CFLAGS := -std=c11 -Wall -Wextra -Werror $(OPT) -D_POSIX_C_SOURCE=200809L \
-            -DDEM_VERSION='"$(VERSION)"' -Ilib -fopenmp $(if $(MPI_ON),-DDEM_MPI) \
+            -DDEM_VERSION='"$(VERSION)"' -Ilib -fopenmp $(if $(MPI_ON),-DDEM_MPI $(MPI_CFLAGS)) \
             $(shell pkg-config --cflags $(PKGS) 2>/dev/null) -I/usr/include/suitesparse
 ALL_CFLAGS = $(DEM_CFLAGS) $(CPPFLAGS) $(CFLAGS)
 # CHOLMOD (SuiteSparse) has no pkg-config file on Debian 12
-LDLIBS   := $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lcholmod -lm
+LDLIBS   := $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lcholmod -lm $(if $(MPI_ON),$(MPI_LIBS))
 ALL_LDFLAGS = $(filter -fsanitize% -fno-sanitize%,$(OPT)) -fopenmp $(LDFLAGS)
 
 LIB_SRC  := $(filter-out $(if $(MPI_ON),lib/par/par.c,lib/par/par_mpi.c),$(sort $(wildcard lib/*/*.c)))
@@ -173,7 +176,7 @@ check: deps
 # build/rel-mpicheck) and runs them when mpicc is installed (make deps
 # installs OpenMPI): in the plain build only, not under SANITIZE, another CC
 # or MPI=1.  They are the plain build's objects with lib/par/par.o replaced
-# by par_mpi.o (the one file -DDEM_MPI changes), linked by mpicc: a minute
+# by par_mpi.o (the one file -DDEM_MPI changes), linked with OpenMPI: a minute
 # of CI less than compiling everything again (`make MPI=1` does that)
 MPICC    := $(if $(SAN)$(COMPILER)$(MPI_ON),,$(shell command -v mpicc 2>/dev/null))
 MPI_DIR  := build/rel-mpicheck
@@ -192,18 +195,18 @@ mpi-build: $(MPI_DIR)/bin/demshot $(MPI_TESTS:%=$(MPI_DIR)/tests/%)
 ifneq ($(MPICC),)
 $(MPI_DIR)/par_mpi.o: lib/par/par_mpi.c
 	@mkdir -p $(@D)
-	$(MPICC) $(ALL_CFLAGS) -DDEM_MPI -MMD -MP -c $< -o $@
+	$(CC) $(ALL_CFLAGS) -DDEM_MPI $(MPI_CFLAGS) -MMD -MP -c $< -o $@
 
 $(MPI_LIB): $(filter-out $(BUILD)/lib/par/par.o,$(LIB_OBJ)) $(MPI_DIR)/par_mpi.o
 	rm -f $@ && ar rcs $@ $^
 
 $(MPI_DIR)/bin/demshot: $(BUILD)/cmd/demshot.o $(MPI_LIB)
 	@mkdir -p $(@D)
-	$(MPICC) $(ALL_LDFLAGS) $< $(MPI_LIB) $(LDLIBS) -o $@
+	$(CC) $(ALL_LDFLAGS) $< $(MPI_LIB) $(LDLIBS) $(MPI_LIBS) -o $@
 
 $(MPI_DIR)/tests/%: $(BUILD)/tests/unit/%.o $(MPI_LIB)
 	@mkdir -p $(@D)
-	$(MPICC) $(ALL_LDFLAGS) $< $(MPI_LIB) $(LDLIBS) -lcmocka -o $@
+	$(CC) $(ALL_LDFLAGS) $< $(MPI_LIB) $(LDLIBS) $(MPI_LIBS) -lcmocka -o $@
 
 -include $(MPI_DIR)/par_mpi.d
 endif
