@@ -1161,8 +1161,14 @@ static void ranks_exchange(dem_fe_t *fe)
 	size_t np = 3 * fe->plane, d = sizeof(double);
 	int top = fe->nrank - 1;
 	if (fe->ext) {
-		memset(fe->fx, 0, 3 * fe->nu0 * d);
-		memset(fe->fx + 3 * fe->nu1, 0, 3 * (fe->nn - fe->nu1) * d);
+		/* only where the loads may have written ([xlo, xhi)): the
+		 * shot hook's top plane, not the whole array each step */
+		size_t a = fe->xlo, b = fe->nu0 < fe->xhi ? fe->nu0 : fe->xhi;
+		if (a < b)
+			memset(fe->fx + 3 * a, 0, 3 * (b - a) * d);
+		a = fe->nu1 > fe->xlo ? fe->nu1 : fe->xlo, b = fe->xhi;
+		if (a < b)
+			memset(fe->fx + 3 * a, 0, 3 * (b - a) * d);
 	}
 	double *lo = fe->rank > 0 ? fe->fi + 3 * fe->nu0 : NULL;
 	double *hi = fe->rank < top ? fe->fi + 3 * fe->nu1 - np : NULL;
