@@ -16,7 +16,7 @@
 #
 # and the excess F_AB - F_A - F_B, which is 0 for independent footprints
 # that do not overlap (for s over twice the footprint radius a: run.sh
-# measures a = 0.55 D at D/5) and negative where they overlap.
+# measures a = 0.56 D at D/5) and negative where they overlap.
 #
 # Writes OUT/pair.txt: s/D, F_A, F_B, F_AB (um^2), excess (um^2 and in
 # per cent of F_A + F_B).

@@ -4,10 +4,9 @@
 # (Al 5052, Han 2004 Table 7.2; shot D = 0.28 mm at 50 m/s, normal to the
 # surface; elements D/PER_D in the fine region; lengths in multiples of D).
 #
-#   1. one shot at the centre of the area, four times, the area moved by
-#      fractions of an element: its footprint by the plastic threshold
-#      (demprofile --surface, plastic share times the region's area, the
-#      whole impact area), a = sqrt(mean footprint / pi);
+#   1. the footprint radius a of one impact by the plastic threshold,
+#      measured by footprint.sh (FOOTPRINT: its a.txt) on single impacts
+#      at a grid of offsets in one element cell;
 #   2. a random stream of independent impacts (dempack --pattern random
 #      --per-pass 1: one shot a pass, so no separation within a pass skews
 #      the positions from uniform) up to the impacts that the Avrami law
@@ -17,46 +16,31 @@
 #      every impact (demprofile --surface).
 #
 # Environment: BIN (../../bin), THREADS (demshot --threads, 1), PER_D (5),
-# AREA_D (the side of the impact area in D, 8), SEED (1), D (0.28, mm).
-# Writes OUT/: scene.yaml, single.* (the single impact), shots.txt,
-# demshot.log, surface.txt (a row per pass: column 11 the plastic
-# coverage), a.txt (the footprint); report.sh reads them.
+# AREA_D (the side of the impact area in D, 8), SEED (1), D (0.28, mm),
+# FOOTPRINT (footprint.sh's a.txt, required).
+# Writes OUT/: scene.yaml, shots.txt, demshot.log, surface.txt (a row per
+# pass: column 11 the plastic coverage); report.sh reads them.
 set -eo pipefail
 out=$1
 here=$(cd "$(dirname "$0")" && pwd)
 bin=$(cd "${BIN:-$here/../../bin}" && pwd)
 seed=${SEED:-1}
+footprint=$(cd "$(dirname "${FOOTPRINT:?run.sh: FOOTPRINT, the a.txt of footprint.sh, is not set}")" && pwd)/$(basename "$FOOTPRINT")
+[ -s "$footprint" ] || { echo "run.sh: $footprint: missing (run footprint.sh first)" >&2; exit 1; }
 mkdir -p "$out"
 cd "$out"
 
 . "$here/scene.sh"
 scene 0 0 > scene.yaml
 
-# 1. one shot at the centre of the area, the area moved by 0, h/2 along x,
-#    h/2 along both, h/4 along both (h the element): where an impact falls
-#    on the grid changes the elements it covers.  Each footprint over the
-#    whole area (margin 0); a from their mean.
-: > single.surf
-: > single.log
-for off in "0 0" "0.5 0" "0.5 0.5" "0.25 0.25"; do
-	set -- $off
-	scene "$(awk -v f="$1" -v h="$h" 'BEGIN { print f * h }')" \
-		"$(awk -v f="$2" -v h="$h" 'BEGIN { print f * h }')" > single.yaml
-	"$bin"/dempack -s single.yaml shots --pattern grid --grid 1 --passes 1 --seed "$seed" -q 2>> single.log |
-		"$bin"/demshot -s single.yaml --threads "$threads" -q -o single.state 2>> single.log
-	"$bin"/demprofile -s single.yaml -q --margin 0 --surface single.tmp -o /dev/null single.state 2>> single.log
-	# the table's header once, then a row per offset (in elements)
-	awk -v o="$off" -v head="$([ -s single.surf ] && echo 0 || echo 1)" \
-		'/^#/ { if (head) print; next } { print $0, "# offset", o }' single.tmp >> single.surf
-done
-rm -f single.state single.tmp single.yaml
-# a = sqrt(mean footprint / pi), the footprint the plastic share times the
-# region's area
-awk '!/^#/ { n++; s += $11 * $10 } END {
-	a = n ? sqrt(s / n / 3.141592653589793) : 0
-	if (!(a > 0)) { print "run.sh: the single impact left no plastic footprint" > "/dev/stderr"; exit 3 }
-	printf "%.9g\n", a }' single.surf > a.txt
-a=$(cat a.txt)
+# 1. the footprint radius a of footprint.sh (FOOTPRINT, the file its
+#    a.txt: the mean single-impact footprint over a stratified grid of
+#    offsets in one element cell)
+a=$(awk 'NR == 1 { print $1 }' "$footprint")
+if ! awk -v a="$a" 'BEGIN { exit !(a > 0) }'; then
+	echo "run.sh: $footprint: no footprint radius" >&2
+	exit 3
+fi
 if ! awk -v a="$a" -v m="$margin" 'BEGIN { exit !(a <= m * 1e-3) }'; then
 	echo "run.sh: the footprint radius $a m is larger than the margin $margin mm" >&2
 	exit 3

@@ -9,7 +9,7 @@ area_d=${AREA_D:-8}
 d=${D:-0.28}
 # lengths in mm from D: shot radius, element, impact area, block side,
 # block depth, fine depth, profile margin (0.75 D: at least the footprint
-# radius, 0.55 D measured at D/5), pass time (us, 2 D / v)
+# radius, 0.56 D measured at D/5), pass time (us, 2 D / v)
 read -r r h area side thick fdepth margin ptime <<< "$(awk -v d="$d" -v n="$per_d" -v k="$area_d" 'BEGIN {
 	printf "%.6g %.6g %.6g %.6g %.6g %.6g %.6g %.6g\n",
 		d / 2, d / n, k * d, (k + 0.4) * d, 1.5 * d, 0.6 * d, 0.75 * d, 2 * d / 50 * 1e3 }')"
