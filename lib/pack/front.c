@@ -949,18 +949,25 @@ static void classify(const struct packer *p, int c, int n, long room,
 	*pj = j;
 }
 
-/* Where an object holds up a disk centred at (px, py): a disk at its
- * centre, a wall at the foot of the perpendicular (the contact point). */
-static void support_point(const struct packer *p, int k, double px, double py,
-			  double *sx)
+/* Where object k (h: 0 the segment's start, 1 its end) holds up the body
+ * centred at (px, py): the x of the contact.  A disk: on a wall the foot
+ * of the perpendicular from the centre, on a disk its centre (the same
+ * vertical order as the contact point, Fig. 5.9).  A polygon or an
+ * ellipse: where it really touches, its support point towards the wall
+ * (not below its centre unless the wall's normal is one of its axes), or
+ * the contact the last tangent found on a body. */
+static double support_x(const struct packer *p, int k, int h, double px, double py)
 {
 	if (k < p->nw) {
 		const struct wall *w = &p->w[k];
-		double d = (px - w->qx) * w->nx + (py - w->qy) * w->ny;
-		*sx = px - d * w->nx;
-	} else {
-		*sx = p->x[k];
+		double tx, ty;
+		if (p->shape) {
+			wall_touch(p, k, px, py, &tx, &ty);
+			return tx;
+		}
+		return px - ((px - w->qx) * w->nx + (py - w->qy) * w->ny) * w->nx;
 	}
+	return p->shape ? p->cpx[h] : p->x[k];
 }
 
 /* Fig. 5.9: the disk rests on c and n when the vertical through its centre
@@ -970,14 +977,7 @@ static void support_point(const struct packer *p, int k, double px, double py,
  * misses, so the front can move that way (downhill). */
 static int stability(const struct packer *p, int c, int n, double px, double py)
 {
-	double a, b;
-	support_point(p, c, px, py, &a);
-	support_point(p, n, px, py, &b);
-	/* a body's support is where it touches (the last tangent's) */
-	if (p->shape && c >= p->nw)
-		a = p->cpx[0];
-	if (p->shape && n >= p->nw)
-		b = p->cpx[1];
+	double a = support_x(p, c, 0, px, py), b = support_x(p, n, 1, px, py);
 	if (px < a)
 		return UNSTABLE_BWD;
 	if (px > b)

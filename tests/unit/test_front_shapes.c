@@ -488,6 +488,72 @@ static void test_refused(void **state)
 	gsl_rng_free(g);
 }
 
+/* The lowest point (lx, ly) of a body and its extent in x [xlo, xhi]:
+ * the ellipse (a, b, theta) in closed form, with A = R diag(a^2, b^2) R^T
+ * its support point in the direction -y is -A e_y / sqrt(A11) and its
+ * half-width sqrt(A00); the polygon by its vertices. */
+static void body_bottom(const dem_front_body_t *b, int shape, int m, double *lx, double *ly,
+			double *xlo, double *xhi)
+{
+	if (shape == DEM_FRONT_ELLIPSE) {
+		double c = cos(b->theta), s = sin(b->theta), a2 = b->a * b->a, b2 = b->b * b->b;
+		double a00 = a2 * c * c + b2 * s * s, a01 = (a2 - b2) * c * s, a11 = a2 * s * s + b2 * c * c;
+		*lx = b->x[0] - a01 / sqrt(a11);
+		*ly = b->x[1] - sqrt(a11);
+		*xlo = b->x[0] - sqrt(a00);
+		*xhi = b->x[0] + sqrt(a00);
+		return;
+	}
+	double V[64][2];
+	x2_polygon(b->x[0], b->x[1], b->a, b->b, b->theta, m, V);
+	*lx = V[0][0], *ly = V[0][1], *xlo = *xhi = V[0][0];
+	for (int k = 1; k < m; k++) {
+		if (V[k][1] < *ly)
+			*lx = V[k][0], *ly = V[k][1];
+		*xlo = fmin(*xlo, V[k][0]);
+		*xhi = fmax(*xhi, V[k][0]);
+	}
+}
+
+/* The gravity rule (Fig. 5.9) with the true contact on a wall: a body in
+ * a bottom corner rests on the side wall and the floor, and is stable
+ * only when the vertical through its centre meets the segment between
+ * the two contacts.  The floor contact is the body's lowest point, not the
+ * foot of the perpendicular from its centre (that holds for disks only).
+ * So a body touching the left wall and the floor has its lowest point at
+ * or right of its centre, and one touching the right wall at or left of
+ * it; a tilted ellipse or polygon breaks this half the time when the
+ * rule takes the foot. */
+static void test_gravity_wall_contact(void **state)
+{
+	(void)state;
+	int corners = 0;
+	for (int sh = DEM_FRONT_POLYGON; sh <= DEM_FRONT_ELLIPSE; sh++)
+		for (unsigned long seed = 1; seed <= 30; seed++) {
+			dem_front_spec_t s = spec((dem_front_shape_t)sh, DEM_FRONT_OPEN, 4, 0.3, 1.5, 3);
+			s.gravity = 1;
+			struct bodies B;
+			dem_front_stats_t st;
+			pack(&s, seed, &B, &st);
+			for (size_t i = 0; i < B.n; i++) {
+				const dem_front_body_t *b = &B.b[i];
+				double size = sqrt(b->a * b->b), touch = 1e-6 * size, lx, ly, xlo, xhi;
+				body_bottom(b, sh, s.sides, &lx, &ly, &xlo, &xhi);
+				if (ly - s.lo[1] > touch)
+					continue;
+				int left = xlo - s.lo[0] < touch, right = s.hi[0] - xhi < touch;
+				if ((left && lx < b->x[0] - EPS * size) || (right && lx > b->x[0] + EPS * size))
+					fail_msg("%s %zu (seed %lu) in the %s corner: its lowest point at x = %.9g, "
+						 "its centre at %.9g", dem_front_shape_names[sh], i, seed,
+						 left ? "left" : "right", lx, b->x[0]);
+				corners += left + right;
+			}
+			free(B.b);
+		}
+	/* most packings fill both corners */
+	assert_true(corners >= 60);
+}
+
 /* 10^5 bodies a shape, aspect ratios 1 to 5 (issue 20, acceptance 1). */
 static void test_large(void **state)
 {
@@ -519,6 +585,7 @@ int main(void)
 		cmocka_unit_test(test_forms),
 		cmocka_unit_test(test_sides_and_polygon_domain),
 		cmocka_unit_test(test_refused),
+		cmocka_unit_test(test_gravity_wall_contact),
 		cmocka_unit_test(test_large),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
