@@ -68,6 +68,12 @@ enum { NIL = -1, OFF = -2 };    /* link at an open end; node not on the front */
  * touching disks computed in floating point (the hexagonal lattice is all
  * contacts) must not count as overlapping. */
 #define TOUCH 1e-10
+/* ... and, far from the origin, the rounding of the coordinates, which
+ * there is the larger: a coordinate of magnitude |x| is stored to half an
+ * ulp, at most DBL_EPSILON |x| / 2, and a new centre is a few operations
+ * from stored ones; 64 ulps leave room for those (at 10^6 radii from the
+ * origin 1.4e-8 of a radius, still far below any real overlap). */
+#define ROUND (64 * DBL_EPSILON)
 /* Radii in a row that no live segment could take stably (gravity) before
  * the packing is taken as complete. */
 #define MAXDROPS 16
@@ -266,6 +272,13 @@ static int ov_push(struct packer *p, int j)
 	return 0;
 }
 
+/* The overlap allowed at (px, py) between bodies whose smaller size is
+ * size: TOUCH of it, and ROUND of the coordinates' magnitude. */
+static double slack(double size, double px, double py)
+{
+	return TOUCH * size + ROUND * fmax(fabs(px), fabs(py));
+}
+
 /* ---- polygons and ellipses (Ch. 5.3-5.4) ------------------------------ */
 
 /* Room in buf: two loci of LOCMAX points and their parts, then scratch. */
@@ -356,13 +369,16 @@ static void w_negated(const struct packer *p, double (*v)[2])
 }
 
 /* Does the body being placed, at (px, py), overlap body or reflex vertex
- * j by more than TOUCH of the smaller size?  (Its bounding circle meets
+ * j by more than slack() of the smaller size?  (Its bounding circle meets
  * j's.) */
 static int shape_overlap(struct packer *p, int j, double px, double py)
 {
 	double dx = px - p->x[j], dy = py - p->y[j];
 	if (p->shape == DEM_FRONT_ELLIPSE) {
-		double lim = (1 - TOUCH) * (1 - TOUCH);
+		/* the factor both would be scaled by to touch: the slack
+		 * relative to the size */
+		double f = 1 - slack(p->W.size, px, py) / p->W.size;
+		double lim = f * f;
 		const double *m = p->W.mat;
 		if (j < p->nfix) {      /* the vertex inside the ellipse */
 			double det = m[0] * m[2] - m[1] * m[1];
@@ -370,22 +386,23 @@ static int shape_overlap(struct packer *p, int j, double px, double py)
 			return q < lim;
 		}
 		/* the inscribed circles overlap: so do the ellipses */
-		if (hypot(dx, dy) < (1 - TOUCH) * (p->W.b + p->eb[j]))
+		if (hypot(dx, dy) < f * (p->W.b + p->eb[j]))
 			return 1;
 		double mj[3], d[2] = {dx, dy};
 		dem_ellipse_matrix(p->ea[j], p->eb[j], p->ec[j], p->es[j], mj);
 		return dem_ellipse_pw(mj, m, d, lim, &p->st->overlap_evals) < lim;
 	}
 	double q[2] = {dx, dy};
-	if (j < p->nfix) {      /* the vertex inside W, deeper than TOUCH */
+	if (j < p->nfix) {      /* the vertex inside W, deeper than the slack */
 		q[0] = -dx, q[1] = -dy;
-		return dem_convex_depth(p->m, (const double (*)[2])p->W.v, q) > TOUCH * p->W.size;
+		return dem_convex_depth(p->m, (const double (*)[2])p->W.v, q) > slack(p->W.size, px, py);
 	}
 	double (*P)[2] = p->buf + 4 * LOCMAX, (*N)[2] = P + MAXSIDES, (*S)[2] = N + MAXSIDES;
 	body_polygon(p, p->ea[j], p->eb[j], p->ec[j], p->es[j], P);
 	w_negated(p, N);
 	int ns = dem_minkowski(p->m, (const double (*)[2])P, p->m, (const double (*)[2])N, S, NULL);
-	return dem_convex_depth(ns, (const double (*)[2])S, q) > TOUCH * fmin(p->W.size, body_size(p, j));
+	return dem_convex_depth(ns, (const double (*)[2])S, q) >
+	       slack(fmin(p->W.size, body_size(p, j)), px, py);
 }
 
 /* Does the body being placed, at (px, py), cross wall k by more than tol
@@ -688,6 +705,7 @@ static int collect(struct packer *p, double px, double py, double r)
 	int ix = cell_of(px, p->gx, p->ginv, p->gnx);
 	int iy = cell_of(py, p->gy, p->ginv, p->gny);
 	int onfront = 0;
+	double round = slack(0, px, py);
 
 	if (++p->serial == 0) {         /* wrapped: stale marks could match */
 		memset(p->hit, 0, (size_t)p->n * sizeof *p->hit);
@@ -701,7 +719,7 @@ static int collect(struct packer *p, double px, double py, double r)
 				double rj = p->r[j];
 				/* a reflex vertex (rj = 0) takes the disk's own
 				 * tolerance, so a disk touching it is no overlap */
-				double d = r + rj - TOUCH * (rj > 0 && rj < r ? rj : r);
+				double d = r + rj - TOUCH * (rj > 0 && rj < r ? rj : r) - round;
 				if (p->shape ? dx * dx + dy * dy < (r + rj) * (r + rj) &&
 					       shape_overlap(p, j, px, py)
 					     : dx * dx + dy * dy < d * d) {
@@ -712,9 +730,9 @@ static int collect(struct packer *p, double px, double py, double r)
 			}
 	for (int k = 0; k < p->nw; k++) {
 		const struct wall *w = &p->w[k];
-		if (p->shape ? shape_wall_overlap(p, k, px, py, TOUCH * p->W.size)
-		    : w->seg ? seg_dist(w, px, py) < r * (1 - TOUCH)
-			     : (px - w->qx) * w->nx + (py - w->qy) * w->ny < r * (1 - TOUCH)) {
+		if (p->shape ? shape_wall_overlap(p, k, px, py, slack(p->W.size, px, py))
+		    : w->seg ? seg_dist(w, px, py) < r * (1 - TOUCH) - round
+			     : (px - w->qx) * w->nx + (py - w->qy) * w->ny < r * (1 - TOUCH) - round) {
 			if (ov_push(p, k))
 				return -1;
 			onfront += p->next[k] != OFF;

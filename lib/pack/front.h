@@ -18,8 +18,12 @@
  *           emitted rests on emitted disks or walls.
  *
  * Guarantees: no two disks emitted overlap by more than 1e-10 of the
- * smaller radius, and every disk emitted lies inside the rectangle (to the
- * same relative tolerance).  Overlap checks go through a uniform grid of
+ * smaller radius plus the rounding of their coordinates (64 ulps of their
+ * magnitude, 64 DBL_EPSILON max(|x|, |y|): negligible near the origin,
+ * the larger term some 10^6 radii from it), and every disk emitted lies
+ * inside the rectangle (to 1e-10 of its radius and the same rounding).
+ * So a packing of a domain moved far from the origin is the packing of
+ * the domain at the origin, moved.  Overlap checks go through a uniform grid of
  * cells as wide as the largest disk, so the cost is O(N) for N disks; the
  * forward/backward front check can be limited to k segments (Ch. 5.2.4).
  * Memory is O(N): all disks are kept until the culling at the end.
@@ -46,9 +50,10 @@
  * after the last the crossing of the outer bounds itself is taken (a
  * fall-back: the body then touches neither exactly but overlaps neither,
  * as the bounds lie outside the loci).  Overlap: polygons by the depth of
- * the centre in the Minkowski sum (the tolerance 1e-10 of the smaller
- * size), ellipses by the Perram-Wertheim function (overlap when below
- * (1 - 1e-10)^2), each after the bounding circles.
+ * the centre in the Minkowski sum (the tolerance t: 1e-10 of the smaller
+ * size and the rounding of the coordinates, as for disks), ellipses by
+ * the Perram-Wertheim function (overlap when below (1 - t / size)^2),
+ * each after the bounding circles.
  *
  * Polygons (open form, Ch. 5.2.4, Figs. 5.12-5.13): every edge is a wall,
  * checked as a segment; the front starts as the chain of edges from the

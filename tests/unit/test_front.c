@@ -279,6 +279,51 @@ static void test_hard_domains(void **state)
 			}
 }
 
+/* Translation (issue: the overlap tolerance was 1e-10 of the radius in
+ * absolute terms, below the rounding of coordinates some 10^6 radii from
+ * the origin): the packing of the rectangle moved by (X, Y) = 2^20 (1, -1)
+ * (exactly representable, so the domain moves exactly) is the packing at
+ * the origin moved by (X, Y): the same disks in the same order, each
+ * centre within 1e-6 of its radius of the moved one, and as many segments
+ * given up.  Equal disks in the closed form (the hexagonal lattice, all
+ * contacts) are the sharpest case.  (Not the same disks placed: there the
+ * lattice puts centres exactly on the rectangle's sides, and whether such
+ * a disk counts as outside, to stop the front, depends on rounding; it is
+ * culled either way.) */
+static void test_far_from_origin(void **state)
+{
+	(void)state;
+	const double X = 1048576, Y = -1048576;
+	for (int c = 0; c < 4; c++) {
+		dem_front_spec_t s = spec(c < 2 ? DEM_FRONT_CLOSED : DEM_FRONT_OPEN, 30, 20,
+					  c == 0 ? DEM_RADIUS_MONO : DEM_RADIUS_URD, 0.5, c == 0 ? 1 : 2);
+		s.gravity = c == 3;
+		struct set a, b;
+		dem_front_stats_t sa, sb;
+		char label[64];
+		snprintf(label, sizeof label, "%s%s%s, moved by 2^20", dem_front_form_names[s.form],
+			 c == 0 ? " equal disks" : "", s.gravity ? " gravity" : "");
+		run(&s, 8, &a, &sa);
+		s.lo[0] += X, s.hi[0] += X, s.lo[1] += Y, s.hi[1] += Y;
+		run(&s, 8, &b, &sb);
+		if (b.n != a.n || sb.failed != sa.failed)
+			fail_msg("%s: %zu disks (%zu placed, %zu failed), at the origin %zu (%zu, %zu)",
+				 label, b.n, sb.placed, sb.failed, a.n, sa.placed, sa.failed);
+		for (size_t i = 0; i < a.n; i++) {
+			assert_true(b.r[i] == a.r[i]);
+			if (fabs(b.x[i] - X - a.x[i]) > 1e-6 * a.r[i] ||
+			    fabs(b.y[i] - Y - a.y[i]) > 1e-6 * a.r[i])
+				fail_msg("%s: disk %zu at (%.17g, %.17g), at the origin (%.17g, %.17g)",
+					 label, i, b.x[i] - X, b.y[i] - Y, a.x[i], a.y[i]);
+		}
+		check_packing(&b, &s, label);
+		print_message("# %s: %zu disks (%zu placed, at the origin %zu), the same as at the "
+			      "origin\n", label, b.n, sb.placed, sa.placed);
+		set_free(&a);
+		set_free(&b);
+	}
+}
+
 /* Fig. 5.10(a): equal disks, closed form, give the hexagonal lattice. */
 static void test_hexagonal(void **state)
 {
@@ -774,6 +819,7 @@ int main(void)
 		cmocka_unit_test(test_open),
 		cmocka_unit_test(test_large),
 		cmocka_unit_test(test_hard_domains),
+		cmocka_unit_test(test_far_from_origin),
 		cmocka_unit_test(test_hexagonal),
 		cmocka_unit_test(test_gravity),
 		cmocka_unit_test(test_seed),

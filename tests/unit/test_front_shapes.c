@@ -27,6 +27,7 @@
 #include <stdint.h>
 #include <cmocka.h>
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -41,6 +42,9 @@
 #include "slow.h"
 
 #define EPS 1e-9
+/* The rounding of coordinates that front.h allows as overlap besides:
+ * 64 ulps of their magnitude (at most 8.5e-12 at 600 from the origin). */
+#define ROUNDING (64 * DBL_EPSILON)
 
 /* ---- the checker and the geometry ------------------------------------- */
 
@@ -384,13 +388,17 @@ static void check(const dem_front_spec_t *s, const struct bodies *B, const char 
 		size_t i = pr.p[k].i, j = pr.p[k].j;
 		const dem_front_body_t *p = &B->b[i], *q = &B->b[j];
 		int ov;
+		/* front.h: EPS of the smaller size, and far from the origin
+		 * the rounding of the coordinates, 64 ulps of their magnitude */
+		double size = fmin(sqrt(p->a * p->b), sqrt(q->a * q->b));
+		double far = ROUNDING * fmax(fmax(fabs(p->x[0]), fabs(p->x[1])),
+					     fmax(fabs(q->x[0]), fabs(q->x[1])));
 		if (s->shape == DEM_FRONT_POLYGON)
 			ov = x2_sat_overlap(m, (const double (*)[2])(V + i * m), m,
-					    (const double (*)[2])(V + j * m),
-					    EPS * fmin(sqrt(p->a * p->b), sqrt(q->a * q->b)));
+					    (const double (*)[2])(V + j * m), EPS * size + far);
 		else
 			ov = x2_wwk_overlap(p->x[0], p->x[1], p->a, p->b, p->theta, q->x[0], q->x[1],
-					    q->a, q->b, q->theta, EPS);
+					    q->a, q->b, q->theta, EPS + far / size);
 		if (ov)
 			fail_msg("%s: bodies %zu and %zu overlap", label, i, j);
 	}
@@ -554,6 +562,46 @@ static void test_gravity_wall_contact(void **state)
 	assert_true(corners >= 60);
 }
 
+/* Translation, as test_far_from_origin in test_front.c: polygons and
+ * ellipses in the rectangle moved by 2^20 (1, -1), about 10^6 sizes from
+ * the origin, are the bodies at the origin moved, each centre within
+ * 1e-6 of its size, with as many segments given up, and no overlap by the
+ * exact tests. */
+static void test_far_from_origin(void **state)
+{
+	(void)state;
+	const double X = 1048576, Y = -1048576;
+	for (int sh = DEM_FRONT_POLYGON; sh <= DEM_FRONT_ELLIPSE; sh++)
+		for (int g = 0; g < 2; g++) {
+			dem_front_spec_t s = spec((dem_front_shape_t)sh, DEM_FRONT_OPEN, 20, 0.5, 2, 3);
+			s.gravity = g;
+			struct bodies A, B;
+			dem_front_stats_t sa, sb;
+			char label[64];
+			snprintf(label, sizeof label, "%s%s, moved by 2^20", dem_front_shape_names[sh],
+				 g ? " gravity" : "");
+			pack(&s, 4, &A, &sa);
+			s.lo[0] += X, s.hi[0] += X, s.lo[1] += Y, s.hi[1] += Y;
+			pack(&s, 4, &B, &sb);
+			if (B.n != A.n || sb.failed != sa.failed)
+				fail_msg("%s: %zu bodies (%zu failed), at the origin %zu (%zu)", label, B.n,
+					 sb.failed, A.n, sa.failed);
+			for (size_t i = 0; i < A.n; i++) {
+				const dem_front_body_t *a = &A.b[i], *b = &B.b[i];
+				double size = sqrt(a->a * a->b);
+				assert_true(a->a == b->a && a->b == b->b && a->theta == b->theta);
+				if (fabs(b->x[0] - X - a->x[0]) > 1e-6 * size ||
+				    fabs(b->x[1] - Y - a->x[1]) > 1e-6 * size)
+					fail_msg("%s: body %zu at (%.17g, %.17g), at the origin (%.17g, %.17g)",
+						 label, i, b->x[0] - X, b->x[1] - Y, a->x[0], a->x[1]);
+			}
+			check(&s, &B, label);
+			print_message("# %s: %zu bodies, the same as at the origin\n", label, B.n);
+			free(A.b);
+			free(B.b);
+		}
+}
+
 /* 10^5 bodies a shape, aspect ratios 1 to 5 (issue 20, acceptance 1). */
 static void test_large(void **state)
 {
@@ -586,6 +634,7 @@ int main(void)
 		cmocka_unit_test(test_sides_and_polygon_domain),
 		cmocka_unit_test(test_refused),
 		cmocka_unit_test(test_gravity_wall_contact),
+		cmocka_unit_test(test_far_from_origin),
 		cmocka_unit_test(test_large),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
