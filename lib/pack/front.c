@@ -1011,7 +1011,8 @@ static int stability(const struct packer *p, int c, int n, double px, double py)
  * overlap the front check cannot place, or -- gravity -- an unstable seat)
  * costs nothing: no bridge over a pocket that stays empty, no real contact
  * hidden behind the front.  On return *c -> *n is the segment last tried
- * and, when PLACED, *i the new disk.  -1 without memory. */
+ * and, when PLACED, *i the new disk.  -1 without memory, -2 for a
+ * candidate not finite (check_spec's ranges should make that impossible). */
 static int attempt(struct packer *p, int *pc, int *pn, double r, int *pi)
 {
 	int c = *pc, n = *pn, res;
@@ -1029,6 +1030,8 @@ static int attempt(struct packer *p, int *pc, int *pn, double r, int *pi)
 			res = FAIL;
 			break;
 		}
+		if (!(isfinite(px) && isfinite(py)))
+			return -2;      /* a NaN would pass every overlap test */
 		if (p->poly) {
 			/* a disk touching a wall's line beyond a reflex end
 			 * touches no wall: go on from that vertex instead, a
@@ -1370,7 +1373,7 @@ static int advance(struct packer *p, gsl_rng *rng, int seg)
 			seg = p->prev[c] >= 0 ? p->prev[c] : c;
 			break;
 		default:
-			return -1;
+			return res;     /* -1 without memory, -2 not finite */
 		}
 	}
 	return 0;
@@ -1497,6 +1500,40 @@ int dem_front_polygon_check(const double *v, int n, dem_error_t *e)
 	return DEM_OK;
 }
 
+/* The lengths the packer may meet: lengths are squared (distances, radii,
+ * areas) and an ellipse's shape matrix has the fourth power of its size
+ * as determinant, so the semi-axes, and the coordinates with a few
+ * bounding radii added, must keep those powers finite and normal (64 of
+ * room for sums and products); an overflow gives infinities and NaNs, and
+ * a NaN passes every "overlap > tol" test.  And the coordinates' rounding
+ * (ROUND of their magnitude, allowed as overlap) must stay below 1e-3 of
+ * the smallest semi-axis, or no disk could be placed to a meaning. */
+static int check_range(const dem_front_spec_t *s, dem_error_t *e)
+{
+	int pw = s->shape == DEM_FRONT_ELLIPSE ? 4 : 2;
+	double al = s->shape != DEM_FRONT_DISK && s->ratio.rmax > 1 ? sqrt(s->ratio.rmax) : 1;
+	double big = s->law.rmax * al, small = s->law.rmin / al, mag = 0;
+	double top = pow(DBL_MAX, 1.0 / pw) / 64, bottom = pow(DBL_MIN, 1.0 / pw) * 64;
+	if (s->polygon)
+		for (int i = 0; i < 2 * s->npolygon; i++)
+			mag = fmax(mag, fabs(s->polygon[i]));
+	else
+		for (int d = 0; d < 2; d++)
+			mag = fmax(mag, fmax(fabs(s->lo[d]), fabs(s->hi[d])));
+	if (!(small >= bottom && big <= top && mag + 8 * big <= top))
+		return dem_error_set(e, DEM_EINPUT,
+				     "advancing front: lengths out of range: semi-axes %g to %g, coordinates "
+				     "up to %g; expected semi-axes from %g and lengths up to %g (their %s "
+				     "must stay finite and normal)", small, big, mag, bottom, top,
+				     pw == 4 ? "fourth powers" : "squares");
+	if (!(ROUND * mag <= 1e-3 * small))
+		return dem_error_set(e, DEM_EINPUT,
+				     "advancing front: coordinates out of range for the radii: at %g from "
+				     "the origin they are rounded to %g, more than 1e-3 of the smallest "
+				     "semi-axis %g", mag, ROUND * mag, small);
+	return DEM_OK;
+}
+
 static int check_spec(const dem_front_spec_t *s, dem_error_t *e)
 {
 	if (s->polygon) {
@@ -1537,7 +1574,7 @@ static int check_spec(const dem_front_spec_t *s, dem_error_t *e)
 		return dem_error_set(e, DEM_EINPUT,
 				     "advancing front: aspect ratios must satisfy 1 <= min <= max (got %g, %g)",
 				     s->ratio.rmin, s->ratio.rmax);
-	return DEM_OK;
+	return check_range(s, e);
 }
 
 /* The grid covers the domain and a margin of two cells (disks of the
@@ -1674,8 +1711,12 @@ static int pack(const dem_front_spec_t *s, gsl_rng *rng, dem_front_emit_fn emit,
 	} else {
 		start_open(p, &seg);
 	}
-	if (advance(p, rng, seg)) {
-		rc = p->n == INT_MAX
+	if ((rc = advance(p, rng, seg))) {
+		rc = rc == -2
+			? dem_error_set(e, DEM_ENUMERIC, "advancing front: a position not finite "
+					"(after %zu bodies); the radii or the domain out of range?",
+					st->placed)
+			: p->n == INT_MAX
 			? dem_error_set(e, DEM_EIO, "advancing front: more than %d disks", INT_MAX)
 			: dem_error_nomem(e, "advancing front disks");
 		goto out;

@@ -158,7 +158,11 @@ int dem_front_polygon_check(const double *v, int n, dem_error_t *e);
  * writer can put the density in its header.  Returns DEM_OK; DEM_EINPUT
  * for a bad spec (empty rectangle, bad polygon, a polygon or gravity
  * with the closed form, radii not 0 < rmin <= rmax, a negative check
- * limit); DEM_EIO when memory runs
+ * limit; lengths out of range: semi-axes or coordinates whose squares --
+ * ellipses: fourth powers -- would overflow or underflow, with 64 of
+ * room, or coordinates so far from the origin that their rounding, 64
+ * ulps, exceeds 1e-3 of the smallest semi-axis); DEM_ENUMERIC for a
+ * position not finite (which those ranges exclude); DEM_EIO when memory runs
  * out or the rectangle holds too many disks (more than 2^31 - 1); or
  * emit's nonzero value. */
 int dem_pack_front(const dem_front_spec_t *s, gsl_rng *rng,

@@ -324,6 +324,77 @@ static void test_far_from_origin(void **state)
 	}
 }
 
+static int count_body(void *ctx, const dem_front_body_t *b)
+{
+	(void)b;
+	++*(size_t *)ctx;
+	return 0;
+}
+
+/* Extreme scales.  The packer squares lengths (distances, radii), so
+ * radii and coordinates whose squares overflow (or underflow) give
+ * infinities and NaNs, and a NaN passes every "overlap > tol" test: such
+ * scenes are refused as bad input, with nothing emitted.  Within range
+ * the method has no scale: the same scene scaled by 2^300 or 2^-300
+ * (exact in binary) gives the same disks scaled, bit for bit. */
+static void test_extreme_scales(void **state)
+{
+	(void)state;
+	const double huge[][3] = {      /* rmin, the domain's side, its lower corner */
+		{1e200, 4e201, 0},      /* radii whose squares overflow */
+		{1e154, 4e155, 0},      /* squared sums and distances do */
+		{1e-3, 0.4, 1e12},      /* coordinates rounded to more than 1e-3 r */
+		{1e-170, 4e-169, 0},    /* squares underflow to zero */
+	};
+	gsl_rng *g = dem_rng_derive(1, 0);
+	for (int f = 0; f < 2; f++)
+		for (size_t k = 0; k < sizeof huge / sizeof huge[0]; k++) {
+			dem_front_spec_t s = spec((dem_front_form_t)f, huge[k][1], huge[k][1],
+						  DEM_RADIUS_URD, huge[k][0], 2);
+			s.lo[0] += huge[k][2], s.hi[0] += huge[k][2];
+			struct set out = {0};
+			dem_error_t e;
+			dem_error_clear(&e);
+			int rc = dem_pack_front(&s, g, collect, &out, NULL, &e);
+			for (size_t i = 0; i < out.n; i++)
+				if (!(isfinite(out.x[i]) && isfinite(out.y[i])))
+					fail_msg("case %zu: disk %zu at (%g, %g)", k, i, out.x[i], out.y[i]);
+			if (rc != DEM_EINPUT)
+				fail_msg("case %zu (%s, radii %g): %d, %zu disks", k,
+					 dem_front_form_names[f], huge[k][0], rc, out.n);
+			assert_int_equal(out.n, 0);
+			if (!strstr(e.msg, "range"))
+				fail_msg("case %zu: %s", k, e.msg);
+			set_free(&out);
+			/* the same through dem_pack_front_bodies, as ellipses */
+			size_t nb = 0;
+			s.shape = DEM_FRONT_ELLIPSE;
+			dem_error_clear(&e);
+			assert_int_equal(dem_pack_front_bodies(&s, g, count_body, &nb, NULL, &e), DEM_EINPUT);
+			assert_int_equal(nb, 0);
+		}
+	for (int f = 0; f < 3; f++)
+		for (int sg = -1; sg <= 1; sg += 2) {
+			const double k = ldexp(1, 300 * sg);
+			dem_front_spec_t s = spec(f ? DEM_FRONT_OPEN : DEM_FRONT_CLOSED, 30, 20,
+						  DEM_RADIUS_URD, 0.5, 2);
+			s.gravity = f == 2;
+			struct set a, b;
+			dem_front_stats_t st;
+			run(&s, 6, &a, &st);
+			s.hi[0] *= k, s.hi[1] *= k, s.law.rmin *= k, s.law.rmax *= k;
+			run(&s, 6, &b, &st);
+			assert_int_equal(b.n, a.n);
+			assert_true(a.n > 100);
+			for (size_t i = 0; i < a.n; i++)
+				if (b.x[i] != a.x[i] * k || b.y[i] != a.y[i] * k || b.r[i] != a.r[i] * k)
+					fail_msg("form %d, scale 2^%d: disk %zu differs", f, 300 * sg, i);
+			set_free(&a);
+			set_free(&b);
+		}
+	gsl_rng_free(g);
+}
+
 /* Fig. 5.10(a): equal disks, closed form, give the hexagonal lattice. */
 static void test_hexagonal(void **state)
 {
@@ -820,6 +891,7 @@ int main(void)
 		cmocka_unit_test(test_large),
 		cmocka_unit_test(test_hard_domains),
 		cmocka_unit_test(test_far_from_origin),
+		cmocka_unit_test(test_extreme_scales),
 		cmocka_unit_test(test_hexagonal),
 		cmocka_unit_test(test_gravity),
 		cmocka_unit_test(test_seed),
