@@ -621,19 +621,17 @@ static int shape_tangent(struct packer *p, int a, int b, double *px, double *py)
 		double v = start_param(&B, x0->ib, x0->sb, x0->x);
 		double tol = 1e-13 * p->W.size + 8 * DBL_EPSILON * (fabs(x0->x[0]) + fabs(x0->x[1]));
 		p->st->newton++;
-		int it = dem_locus_meet(&A.L, &B.L, &u, &v, tol, NEWTON_MAXIT);
+		int steps;
+		int ok = dem_locus_meet(&A.L, &B.L, &u, &v, tol, NEWTON_MAXIT, &steps) >= 0;
 		double x[2];
-		int ok = it >= 0;
+		p->st->newton_iters += (size_t)steps;   /* converged or not */
 		if (ok) {
-			p->st->newton_iters += (size_t)it;
 			dem_locus_eval(&A.L, u, x, NULL);
 			double d0 = hypot(x[0] - x0->x[0], x[1] - x0->x[1]);
 			ok = d0 <= p->W.r;
 			for (int k = 0; k < nc && ok; k++)
 				if (k != best && hypot(x[0] - c[k].x[0], x[1] - c[k].x[1]) < d0)
 					ok = 0;
-		} else {
-			p->st->newton_iters += NEWTON_MAXIT;
 		}
 		if (ok) {
 			*px = x[0];

@@ -126,7 +126,7 @@ typedef struct dem_front_stats {
 	size_t front_max;       /* the largest front, in disks and walls */
 	/* ellipses: the contact position by Newton's method */
 	size_t newton;          /* solves started (one per level tried) */
-	size_t newton_iters;    /* their steps */
+	size_t newton_iters;    /* their steps, converged or not */
 	size_t newton_failed;   /* solves refused (not converged, or the
 				 * root outside the bounds' neighbourhood) */
 	size_t fallbacks;       /* positions taken from the outer bounds

@@ -188,7 +188,7 @@ static void test_ellipse_geometry(void **state)
 	dem_locus_eval(&A, 0.7, x, NULL);
 	assert_true(fabs(hypot(x[0], x[1]) - 1.5) < 1e-14);
 	double u = 1.0, v = 2.0;
-	assert_true(dem_locus_meet(&A, &B, &u, &v, 1e-14, 30) >= 0);
+	assert_true(dem_locus_meet(&A, &B, &u, &v, 1e-14, 30, NULL) >= 0);
 	dem_locus_eval(&A, u, x, NULL);
 	assert_true(fabs(x[0] - 1) < 1e-13 && fabs(x[1] - sqrt(1.5 * 1.5 - 1)) < 1e-13);
 	/* the outer bound lies outside the locus: every point of it */
@@ -300,6 +300,46 @@ static void test_ellipse_in_polygon(void **state)
 	assert_true(ellipse_in_polygon((double[2]){0.29, 0.5}, 0.3, 0.1, pi / 2, L, 6, EPS));
 }
 
+
+/* Newton's count (dem_locus_meet's steps, summed into the packer's
+ * newton_iters) is the steps taken, also when the solve fails, not the
+ * limit: a singular start (two parallel lines) fails before any step, a
+ * limit of maxit ends after maxit steps, a converged solve reports the
+ * steps it returns. */
+static void test_newton_count(void **state)
+{
+	(void)state;
+	dem_locus_t P = {0}, Q = {0};
+	P.line = Q.line = 1;
+	P.t[0] = Q.t[0] = 1;
+	Q.c[1] = 1;                     /* y = 0 and y = 1: never meet */
+	double u = 0, v = 0;
+	int steps = -5;
+	assert_int_equal(dem_locus_meet(&P, &Q, &u, &v, 1e-14, 30, &steps), -1);
+	assert_int_equal(steps, 0);
+	/* two circles' loci (radius 1.5 about 0 and about (2, 0)) meet at
+	 * (1, sqrt(1.25)): from a start a radian off, one step is not enough
+	 * for 1e-14, and maxit = 1 stops after it */
+	dem_locus_t A = {0}, B;
+	dem_ellipse_matrix(1, 1, 1, 0, A.m1);
+	dem_ellipse_matrix(0.5, 0.5, 1, 0, A.m2);
+	B = A;
+	B.c[0] = 2;
+	u = 1.0, v = 2.0;
+	steps = -5;
+	assert_int_equal(dem_locus_meet(&A, &B, &u, &v, 1e-14, 1, &steps), -1);
+	assert_int_equal(steps, 1);
+	u = 1.0, v = 2.0;
+	int it = dem_locus_meet(&A, &B, &u, &v, 1e-14, 30, &steps);
+	assert_true(it > 1);
+	assert_int_equal(steps, it);
+	/* a step of more than a radian is refused before it is taken: from
+	 * (u, v) = (4, 2) the first Newton step is (-0.947, 2.516) (by hand:
+	 * the 2 x 2 system [A'(u), -B'(v)] (du, dv) = B(v) - A(u)) */
+	u = 4.0, v = 2.0;
+	assert_int_equal(dem_locus_meet(&A, &B, &u, &v, 1e-14, 30, &steps), -1);
+	assert_int_equal(steps, 0);
+}
 
 /* Every pair whose bounding boxes meet, by the independent tests; every
  * body inside the rectangle (polygon: its points; ellipse: its extents),
@@ -629,6 +669,7 @@ int main(void)
 		cmocka_unit_test(test_sat),
 		cmocka_unit_test(test_minkowski),
 		cmocka_unit_test(test_ellipse_geometry),
+		cmocka_unit_test(test_newton_count),
 		cmocka_unit_test(test_ellipse_in_polygon),
 		cmocka_unit_test(test_forms),
 		cmocka_unit_test(test_sides_and_polygon_domain),
