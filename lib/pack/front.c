@@ -56,6 +56,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "contact/polygon.h"
 #include "core/consts.h"
 #include "pack/locus.h"
 
@@ -139,7 +140,8 @@ struct packer {
 	 * body's bounding radius, and */
 	dem_front_shape_t shape;
 	int m;                  /* polygon sides */
-	double tc[MAXSIDES], ts[MAXSIDES];  /* the unit m-gon, flat side down */
+	double unit[MAXSIDES][2];  /* the unit m-gon, flat side down */
+	double unit_area;       /* its area */
 	double *ea, *eb, *ec, *es;  /* semi-axes, cos and sin of the rotation */
 	double rb;              /* the largest bounding radius */
 	struct {                /* the body being placed */
@@ -319,7 +321,7 @@ static void body_polygon(const struct packer *p, double a, double b, double c, d
 			 double (*v)[2])
 {
 	for (int k = 0; k < p->m; k++) {
-		double x = a * p->tc[k], y = b * p->ts[k];
+		double x = a * p->unit[k][0], y = b * p->unit[k][1];
 		v[k][0] = c * x - s * y;
 		v[k][1] = s * x + c * y;
 	}
@@ -1440,15 +1442,13 @@ static int meet(const double *a, const double *b, const double *c, const double 
 	       (o4 == 0 && on_seg(c[0], c[1], d[0], d[1], b[0], b[1]));
 }
 
-/* Twice the signed area of the n-gon v (shoelace, positive anticlockwise),
- * taken about its first vertex: the terms then have the polygon's size,
- * not its distance from the origin, and do not cancel. */
+/* Twice the signed area of the n-gon v (x0 y0 x1 y1 ...; positive
+ * anticlockwise), by the library's shoelace about the first vertex. */
 static double twice_area(const double *v, int n)
 {
-	double a2 = 0;
-	for (int i = 1; i + 1 < n; i++)
-		a2 += (v[2 * i] - v[0]) * (v[2 * i + 3] - v[1]) - (v[2 * i + 1] - v[1]) * (v[2 * i + 2] - v[0]);
-	return a2;
+	dem_area_props_t pr;
+	dem_polygon_props(n, (const double (*)[2])v, &pr);
+	return 2 * pr.A;
 }
 
 int dem_front_polygon_check(const double *v, int n, dem_error_t *e)
@@ -1642,8 +1642,9 @@ static double body_area(const struct packer *p, int i)
 {
 	if (!p->shape)
 		return DEM_PI * p->r[i] * p->r[i];
+	/* the unit m-gon stretched by a and b */
 	double ab = p->ea[i] * p->eb[i];
-	return p->shape == DEM_FRONT_ELLIPSE ? DEM_PI * ab : ab * 0.5 * p->m * sin(2 * DEM_PI / p->m);
+	return p->shape == DEM_FRONT_ELLIPSE ? DEM_PI * ab : ab * p->unit_area;
 }
 
 static int pack(const dem_front_spec_t *s, gsl_rng *rng, dem_front_emit_fn emit,
@@ -1668,11 +1669,10 @@ static int pack(const dem_front_spec_t *s, gsl_rng *rng, dem_front_emit_fn emit,
 	p->shape = s->shape;
 	if (p->shape) {
 		p->m = s->sides;
-		for (int k = 0; k < p->m; k++) {    /* a side flat at the bottom */
-			double phi = -0.5 * DEM_PI + DEM_PI / p->m + 2 * DEM_PI * k / p->m;
-			p->tc[k] = cos(phi);
-			p->ts[k] = sin(phi);
-		}
+		dem_area_props_t pr;
+		dem_polygon_regular(p->m, 1, 1, p->unit);
+		dem_polygon_props(p->m, (const double (*)[2])p->unit, &pr);
+		p->unit_area = pr.A;
 		p->rb = s->law.rmax * (s->ratio.rmin > 0 ? sqrt(s->ratio.rmax) : 1);
 		if (!(p->buf = malloc(BUFPTS * sizeof *p->buf))) {
 			rc = dem_error_nomem(e, "advancing front loci");

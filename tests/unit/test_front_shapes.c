@@ -33,6 +33,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "contact/polygon.h"
 #include "core/rng.h"
 #include "detect/detect.h"
 #include "pack/front.h"
@@ -642,6 +643,37 @@ static void test_far_from_origin(void **state)
 		}
 }
 
+/* The polygon bodies' area in the statistics: a b (m / 2) sin(2 pi / m)
+ * each, the regular m-gon of circumradius 1 (area (m / 2) sin(2 pi / m))
+ * stretched by a and b; and the library's polygon of the body stream's
+ * shape 1 (dem_polygon_regular, which the packer and lib/body share) is
+ * the checker's x2_polygon point for point. */
+static void test_polygon_area(void **state)
+{
+	(void)state;
+	for (int m = 3; m <= 64; m += m < 8 ? 1 : 28) {
+		double V[64][2], W[64][2];
+		dem_polygon_regular(m, 1.7, 0.6, V);
+		x2_polygon(0, 0, 1.7, 0.6, 0, m, W);
+		for (int k = 0; k < m; k++)
+			assert_true(fabs(V[k][0] - W[k][0]) < 1e-15 && fabs(V[k][1] - W[k][1]) < 1e-15);
+		dem_front_spec_t s = spec(DEM_FRONT_POLYGON, DEM_FRONT_OPEN, 8, 0.4, 1.5, 3);
+		s.sides = m;
+		struct bodies B;
+		dem_front_stats_t st;
+		pack(&s, 3, &B, &st);
+		double a = 0;
+		for (size_t i = 0; i < B.n; i++)
+			a += B.b[i].a * B.b[i].b * 0.5 * m * sin(2 * X2_PI / m);
+		assert_true(B.n > 20);
+		assert_int_equal(st.kept, B.n);
+		if (!(fabs(st.area - a) <= 1e-12 * a))
+			fail_msg("%d sides: area %.17g, closed form %.17g", m, st.area, a);
+		assert_true(fabs(st.density - a / 64) <= 1e-12 * st.density);
+		free(B.b);
+	}
+}
+
 /* 10^5 bodies a shape, aspect ratios 1 to 5 (issue 20, acceptance 1). */
 static void test_large(void **state)
 {
@@ -676,6 +708,7 @@ int main(void)
 		cmocka_unit_test(test_refused),
 		cmocka_unit_test(test_gravity_wall_contact),
 		cmocka_unit_test(test_far_from_origin),
+		cmocka_unit_test(test_polygon_area),
 		cmocka_unit_test(test_large),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
