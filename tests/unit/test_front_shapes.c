@@ -4,7 +4,9 @@
  * References:
  *   - the checker itself (exact2d.h): Wang-Wang-Kim's cubic against a
  *     dense sampling of the two boundaries on random pairs clearly apart
- *     or clearly overlapping, and touching circles;
+ *     or clearly overlapping, at aspect ratios 1 to 5 and 1 to 1000;
+ *     touching circles, and touching ellipses built in closed form at
+ *     aspect ratios 1 to 1000, shrunk or grown by 1e-9;
  *   - Minkowski sums: rectangles give the rectangle of summed sides; a
  *     triangle plus itself turned through 180 degrees is a hexagon of six
  *     times its area; a point and a segment; random pairs: at most
@@ -94,6 +96,76 @@ static void test_wwk_against_sampling(void **state)
 	assert_false(x2_wwk_overlap(0, 0, 1, 1, 0, 3, 0, 2, 2, 0, 1e-9));
 	assert_true(x2_wwk_overlap(0, 0, 1, 1, 0, 3 - 1e-6, 0, 2, 2, 0, 1e-9));
 	assert_true(apart > 300 && over > 300);
+	gsl_rng_free(g);
+}
+
+/* The checker at aspect ratios 1 to 1000 (log-uniform), against the
+ * sampled boundaries (n points a boundary, enough that two samples are
+ * closer than a tenth of the thinner semi-axis): the cubic's coefficients
+ * spread as the square of the ratio there, and the checker must still
+ * call every pair clearly apart apart and every pair clearly overlapping
+ * an overlap; and pairs touching by construction, shrunk or grown by
+ * 1e-9, apart or overlapping. */
+static void test_wwk_thin(void **state)
+{
+	(void)state;
+	gsl_rng *g = dem_rng_derive(12, 0);
+	int apart = 0, over = 0, thin = 0;
+	int ntry = SLOW_CASES(2000, 400);
+	for (int t = 0; t < ntry; t++) {
+		double al1 = pow(1000, gsl_rng_uniform(g)), al2 = pow(1000, gsl_rng_uniform(g));
+		double a1 = 0.5 + gsl_rng_uniform(g), b1 = a1 / al1;
+		double a2 = 0.5 + gsl_rng_uniform(g), b2 = a2 / al2;
+		double t1 = 7 * gsl_rng_uniform(g), t2 = 7 * gsl_rng_uniform(g);
+		double x1 = 10 + 2 * gsl_rng_uniform(g), y1 = -5 + 2 * gsl_rng_uniform(g);
+		double x2 = 10 + 2 * gsl_rng_uniform(g), y2 = -5 + 2 * gsl_rng_uniform(g);
+		int n = (int)(20 * X2_PI * fmax(a1, a2) / fmin(b1, b2)) + 1000;
+		double m12 = sample_min(x1, y1, a1, b1, t1, x2, y2, a2, b2, t2, n);
+		double m21 = sample_min(x2, y2, a2, b2, t2, x1, y1, a1, b1, t1, n);
+		double dc = sample_min(x1, y1, 1e-9, 1e-9, 0, x2, y2, a2, b2, t2, 1);
+		int wwk = x2_wwk_overlap(x1, y1, a1, b1, t1, x2, y2, a2, b2, t2, 0);
+		thin += fmax(al1, al2) >= 50;
+		if (fmin(m12, m21) < -0.02 || dc < 0) {
+			if (!wwk)
+				fail_msg("pair %d (aspect %.0f, %.0f): sampled overlap (%g), WWK says apart",
+					 t, al1, al2, fmin(m12, m21));
+			over++;
+		} else if (fmin(m12, m21) > 0.02) {
+			if (wwk)
+				fail_msg("pair %d (aspect %.0f, %.0f): sampled apart (%g), WWK says overlap",
+					 t, al1, al2, fmin(m12, m21));
+			apart++;
+		}
+	}
+	print_message("# thin ellipses: %d pairs, %d apart, %d overlapping, %d with an aspect "
+		      "ratio of 50 or more\n", ntry, apart, over, thin);
+	assert_true(apart > ntry / 10 && over > ntry / 10 && thin > ntry / 3);
+	/* touching pairs in closed form, as the packings' are: ellipse 2's
+	 * support point in a direction -n put on ellipse 1's in n (the
+	 * support point of R diag(a^2, b^2) R^T = M in n is M n / sqrt(n^T
+	 * M n)); shrunk by 1e-9 they are apart, grown by 1e-9 they overlap */
+	for (int t = 0; t < 5000; t++) {
+		double al1 = pow(1000, gsl_rng_uniform(g)), al2 = pow(1000, gsl_rng_uniform(g));
+		double e[2][3], sp[2][2], u = 2 * X2_PI * gsl_rng_uniform(g);
+		for (int k = 0; k < 2; k++) {
+			e[k][0] = 0.5 + gsl_rng_uniform(g);
+			e[k][1] = e[k][0] / (k ? al2 : al1);
+			e[k][2] = 7 * gsl_rng_uniform(g);
+			double c = cos(e[k][2]), sn = sin(e[k][2]), a2 = e[k][0] * e[k][0], b2 = e[k][1] * e[k][1];
+			double n0 = k ? -cos(u) : cos(u), n1 = k ? -sin(u) : sin(u);
+			double mx = (a2 * c * c + b2 * sn * sn) * n0 + (a2 - b2) * c * sn * n1;
+			double my = (a2 - b2) * c * sn * n0 + (a2 * sn * sn + b2 * c * c) * n1;
+			double h = sqrt(n0 * mx + n1 * my);
+			sp[k][0] = mx / h, sp[k][1] = my / h;
+		}
+		double x1 = 10 + 2 * gsl_rng_uniform(g), y1 = -5 + 2 * gsl_rng_uniform(g);
+		double x2 = x1 + sp[0][0] - sp[1][0], y2 = y1 + sp[0][1] - sp[1][1];
+		for (int sg = -1; sg <= 1; sg += 2)
+			if (x2_wwk_overlap(x1, y1, e[0][0], e[0][1], e[0][2], x2, y2, e[1][0], e[1][1],
+					   e[1][2], sg * 1e-9) != (sg < 0))
+				fail_msg("touching pair %d (aspect %.0f, %.0f) %s by 1e-9: WWK says %s", t,
+					 al1, al2, sg > 0 ? "shrunk" : "grown", sg > 0 ? "overlap" : "apart");
+	}
 	gsl_rng_free(g);
 }
 
@@ -698,6 +770,7 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_wwk_against_sampling),
+		cmocka_unit_test(test_wwk_thin),
 		cmocka_unit_test(test_sat),
 		cmocka_unit_test(test_minkowski),
 		cmocka_unit_test(test_ellipse_geometry),
