@@ -32,7 +32,9 @@
  * touching a wall is found as a disk touching a line.
  *
  * Polygons and ellipses (Ch. 5.3-5.4): the same front, forms, domains and
- * gravity rule with convex bodies placed by translation only, each drawn
+ * gravity rule (a body's support on a wall is where it touches it, its
+ * support point towards the wall, on a body the contact of the tangent
+ * solve) with convex bodies placed by translation only, each drawn
  * with a size r (the radius law), an aspect ratio alpha >= 1 (a law of
  * the same kinds) and a uniform random rotation theta, with semi-axes
  * a = r sqrt(alpha), b = r / sqrt(alpha) (so a b = r^2):

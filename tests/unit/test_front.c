@@ -20,7 +20,13 @@
  *     and every edge, as a segment, at least r(1 - 1e-9) away; under
  *     gravity every disk is held up by Fig. 5.9 with edges as supports at
  *     their contact points; the density against the polygon's area
- *     (shoelace) is reported; bad polygons are refused.
+ *     (shoelace) is reported; bad polygons are refused;
+ *   - translation: a rectangle moved by 2^20 (1, -1) gives the disks at the
+ *     origin moved, within 1e-6 of the radius (the tolerance adds the
+ *     rounding of the coordinates);
+ *   - scale: radii or coordinates whose squares overflow or underflow, or
+ *     coordinates rounded to more than 1e-3 of the radii, are refused; a
+ *     scene scaled by 2^300 or 2^-300 gives the disks scaled, bit for bit.
  */
 #include <setjmp.h>
 #include <stdarg.h>

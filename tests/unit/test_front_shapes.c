@@ -14,14 +14,22 @@
  *   - Perram-Wertheim: for two circles F = d^2 / (r1 + r2)^2, for two
  *     ellipses scaled by sqrt(F) the sampled boundaries touch; the locus of
  *     a circle round a circle is the circle of radius r1 + r2; Newton on
- *     two circle loci against the circle-circle intersection;
+ *     two circle loci against the circle-circle intersection; Newton's
+ *     step count when it fails (0 from a singular start or a first step
+ *     of more than a radian, worked by hand; maxit at the limit);
  *   - packings: no two bodies overlap by the independent exact tests
  *     (exact2d.h: separating axes for polygons, WWK for ellipses, each
  *     allowing 1e-9 of the size), on every pair whose bounding boxes meet
  *     (D-cell, checked against brute force in test_detect); every body
  *     inside the rectangle (its points, or its extents, to 1e-9); open,
  *     closed and gravity forms, an L-shaped polygon; 10^5 bodies of each
- *     shape with aspect ratios 1 to 5 (fewer under the sanitizers).
+ *     shape with aspect ratios 1 to 5 (fewer under the sanitizers);
+ *   - gravity (Fig. 5.9) with a body's true contact on a wall: a body in a
+ *     bottom corner has its lowest point (closed form) on the side wall's
+ *     side of its centre;
+ *   - translation: a rectangle moved by 2^20 (1, -1) gives the bodies at
+ *     the origin moved, within 1e-6 of the size;
+ *   - polygon areas in the statistics against a b (m/2) sin(2 pi/m).
  */
 #include <setjmp.h>
 #include <stdarg.h>
