@@ -328,6 +328,37 @@ static void test_far_from_origin(void **state)
 		set_free(&a);
 		set_free(&b);
 	}
+	/* polygons of whole vertices (they move exactly too): the L and the
+	 * hopper of test_polygons, with and without gravity */
+	static const double L[12] = {0, 0, 0, 20, 10, 20, 10, 10, 20, 10, 20, 0};
+	static const double H[12] = {0, 20, 8, 4, 8, 0, 12, 0, 12, 4, 20, 20};
+	for (int c = 0; c < 4; c++) {
+		const double *v0 = c < 2 ? L : H;
+		double v[12];
+		dem_front_spec_t s = spec(DEM_FRONT_OPEN, 1, 1, DEM_RADIUS_URD, 0.3, 2);
+		s.polygon = v;
+		s.npolygon = 6;
+		s.gravity = c % 2;
+		struct set a, b;
+		dem_front_stats_t sa, sb;
+		memcpy(v, v0, sizeof v);
+		run(&s, 9, &a, &sa);
+		for (int k = 0; k < 6; k++)
+			v[2 * k] += X, v[2 * k + 1] += Y;
+		run(&s, 9, &b, &sb);
+		if (b.n != a.n || sb.failed != sa.failed)
+			fail_msg("%s%s: %zu disks (%zu failed), at the origin %zu (%zu)", c < 2 ? "L" : "hopper",
+				 s.gravity ? " gravity" : "", b.n, sb.failed, a.n, sa.failed);
+		for (size_t i = 0; i < a.n; i++)
+			if (!(b.r[i] == a.r[i] && fabs(b.x[i] - X - a.x[i]) <= 1e-6 * a.r[i] &&
+			      fabs(b.y[i] - Y - a.y[i]) <= 1e-6 * a.r[i]))
+				fail_msg("%s: disk %zu differs", c < 2 ? "L" : "hopper", i);
+		check_packing(&b, NULL, "polygon moved");
+		print_message("# %s%s, moved by 2^20: %zu disks, the same as at the origin\n",
+			      c < 2 ? "L" : "hopper", s.gravity ? " gravity" : "", b.n);
+		set_free(&a);
+		set_free(&b);
+	}
 }
 
 static int count_body(void *ctx, const dem_front_body_t *b)
