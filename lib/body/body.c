@@ -71,10 +71,7 @@ int dem_shape_init(dem_shape_t *s, int kind, double a, double b, double m, doubl
 		 * (the points on the ellipse of semi-axes a, b) */
 		if (!(b > 0) || !isfinite(b))
 			b = a;
-		for (int k = 0; k < n; k++) {
-			double phi = -0.5 * DEM_PI + DEM_PI / n + 2 * DEM_PI * k / n;
-			s->v[k][0] = a * cos(phi), s->v[k][1] = b * sin(phi);
-		}
+		dem_polygon_regular(n, a, b, s->v);
 		s->nv = n;
 		s->a = a, s->b = b, s->m = m;
 		shape_finish(s);

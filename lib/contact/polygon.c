@@ -137,6 +137,15 @@ void dem_polygon_props(int n, const double (*v)[2], dem_area_props_t *p)
 	p->J = j / 12 - p->A * (cx * cx + cy * cy);
 }
 
+void dem_polygon_regular(int m, double a, double b, double (*v)[2])
+{
+	for (int k = 0; k < m; k++) {
+		double phi = -0.5 * DEM_PI + DEM_PI / m + 2 * DEM_PI * k / m;
+		v[k][0] = a * cos(phi);
+		v[k][1] = b * sin(phi);
+	}
+}
+
 void dem_polygon_place(int n, const double (*v)[2], const double x[2], double theta,
                        double (*w)[2])
 {

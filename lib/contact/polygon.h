@@ -107,6 +107,12 @@ void dem_superquadric_props(double a, double b, double m, dem_area_props_t *p);
  * the centroid the mean of the points. */
 void dem_polygon_props(int n, const double (*v)[2], dem_area_props_t *p);
 
+/* The body stream's polygon (shape 1, dem-streams(5)): the m points
+ * (a cos p, b sin p), p = -pi/2 + pi/m + 2 pi k/m, k = 0 .. m-1, so
+ * anticlockwise with a side flat at the bottom: the regular m-gon of
+ * circumradius 1 stretched by a along x and b along y (m >= 3). */
+void dem_polygon_regular(int m, double a, double b, double (*v)[2]);
+
 /* w[i] = x + R(theta) v[i]: the polygon v[n] turned by theta about the
  * origin and moved to x (a body's pose).  w may be v. */
 void dem_polygon_place(int n, const double (*v)[2], const double x[2], double theta,

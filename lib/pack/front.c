@@ -56,6 +56,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "contact/polygon.h"
 #include "core/consts.h"
 #include "pack/locus.h"
 
@@ -68,6 +69,12 @@ enum { NIL = -1, OFF = -2 };    /* link at an open end; node not on the front */
  * touching disks computed in floating point (the hexagonal lattice is all
  * contacts) must not count as overlapping. */
 #define TOUCH 1e-10
+/* ... and, far from the origin, the rounding of the coordinates, which
+ * there is the larger: a coordinate of magnitude |x| is stored to half an
+ * ulp, at most DBL_EPSILON |x| / 2, and a new centre is a few operations
+ * from stored ones; 64 ulps leave room for those (at 10^6 radii from the
+ * origin 1.4e-8 of a radius, still far below any real overlap). */
+#define ROUND (64 * DBL_EPSILON)
 /* Radii in a row that no live segment could take stably (gravity) before
  * the packing is taken as complete. */
 #define MAXDROPS 16
@@ -133,7 +140,8 @@ struct packer {
 	 * body's bounding radius, and */
 	dem_front_shape_t shape;
 	int m;                  /* polygon sides */
-	double tc[MAXSIDES], ts[MAXSIDES];  /* the unit m-gon, flat side down */
+	double unit[MAXSIDES][2];  /* the unit m-gon, flat side down */
+	double unit_area;       /* its area */
 	double *ea, *eb, *ec, *es;  /* semi-axes, cos and sin of the rotation */
 	double rb;              /* the largest bounding radius */
 	struct {                /* the body being placed */
@@ -266,6 +274,13 @@ static int ov_push(struct packer *p, int j)
 	return 0;
 }
 
+/* The overlap allowed at (px, py) between bodies whose smaller size is
+ * size: TOUCH of it, and ROUND of the coordinates' magnitude. */
+static double slack(double size, double px, double py)
+{
+	return TOUCH * size + ROUND * fmax(fabs(px), fabs(py));
+}
+
 /* ---- polygons and ellipses (Ch. 5.3-5.4) ------------------------------ */
 
 /* Room in buf: two loci of LOCMAX points and their parts, then scratch. */
@@ -306,7 +321,7 @@ static void body_polygon(const struct packer *p, double a, double b, double c, d
 			 double (*v)[2])
 {
 	for (int k = 0; k < p->m; k++) {
-		double x = a * p->tc[k], y = b * p->ts[k];
+		double x = a * p->unit[k][0], y = b * p->unit[k][1];
 		v[k][0] = c * x - s * y;
 		v[k][1] = s * x + c * y;
 	}
@@ -356,13 +371,16 @@ static void w_negated(const struct packer *p, double (*v)[2])
 }
 
 /* Does the body being placed, at (px, py), overlap body or reflex vertex
- * j by more than TOUCH of the smaller size?  (Its bounding circle meets
+ * j by more than slack() of the smaller size?  (Its bounding circle meets
  * j's.) */
 static int shape_overlap(struct packer *p, int j, double px, double py)
 {
 	double dx = px - p->x[j], dy = py - p->y[j];
 	if (p->shape == DEM_FRONT_ELLIPSE) {
-		double lim = (1 - TOUCH) * (1 - TOUCH);
+		/* the factor both would be scaled by to touch: the slack
+		 * relative to the size */
+		double f = 1 - slack(p->W.size, px, py) / p->W.size;
+		double lim = f * f;
 		const double *m = p->W.mat;
 		if (j < p->nfix) {      /* the vertex inside the ellipse */
 			double det = m[0] * m[2] - m[1] * m[1];
@@ -370,22 +388,23 @@ static int shape_overlap(struct packer *p, int j, double px, double py)
 			return q < lim;
 		}
 		/* the inscribed circles overlap: so do the ellipses */
-		if (hypot(dx, dy) < (1 - TOUCH) * (p->W.b + p->eb[j]))
+		if (hypot(dx, dy) < f * (p->W.b + p->eb[j]))
 			return 1;
 		double mj[3], d[2] = {dx, dy};
 		dem_ellipse_matrix(p->ea[j], p->eb[j], p->ec[j], p->es[j], mj);
 		return dem_ellipse_pw(mj, m, d, lim, &p->st->overlap_evals) < lim;
 	}
 	double q[2] = {dx, dy};
-	if (j < p->nfix) {      /* the vertex inside W, deeper than TOUCH */
+	if (j < p->nfix) {      /* the vertex inside W, deeper than the slack */
 		q[0] = -dx, q[1] = -dy;
-		return dem_convex_depth(p->m, (const double (*)[2])p->W.v, q) > TOUCH * p->W.size;
+		return dem_convex_depth(p->m, (const double (*)[2])p->W.v, q) > slack(p->W.size, px, py);
 	}
 	double (*P)[2] = p->buf + 4 * LOCMAX, (*N)[2] = P + MAXSIDES, (*S)[2] = N + MAXSIDES;
 	body_polygon(p, p->ea[j], p->eb[j], p->ec[j], p->es[j], P);
 	w_negated(p, N);
 	int ns = dem_minkowski(p->m, (const double (*)[2])P, p->m, (const double (*)[2])N, S, NULL);
-	return dem_convex_depth(ns, (const double (*)[2])S, q) > TOUCH * fmin(p->W.size, body_size(p, j));
+	return dem_convex_depth(ns, (const double (*)[2])S, q) >
+	       slack(fmin(p->W.size, body_size(p, j)), px, py);
 }
 
 /* Does the body being placed, at (px, py), cross wall k by more than tol
@@ -604,19 +623,17 @@ static int shape_tangent(struct packer *p, int a, int b, double *px, double *py)
 		double v = start_param(&B, x0->ib, x0->sb, x0->x);
 		double tol = 1e-13 * p->W.size + 8 * DBL_EPSILON * (fabs(x0->x[0]) + fabs(x0->x[1]));
 		p->st->newton++;
-		int it = dem_locus_meet(&A.L, &B.L, &u, &v, tol, NEWTON_MAXIT);
+		int steps;
+		int ok = dem_locus_meet(&A.L, &B.L, &u, &v, tol, NEWTON_MAXIT, &steps) >= 0;
 		double x[2];
-		int ok = it >= 0;
+		p->st->newton_iters += (size_t)steps;   /* converged or not */
 		if (ok) {
-			p->st->newton_iters += (size_t)it;
 			dem_locus_eval(&A.L, u, x, NULL);
 			double d0 = hypot(x[0] - x0->x[0], x[1] - x0->x[1]);
 			ok = d0 <= p->W.r;
 			for (int k = 0; k < nc && ok; k++)
 				if (k != best && hypot(x[0] - c[k].x[0], x[1] - c[k].x[1]) < d0)
 					ok = 0;
-		} else {
-			p->st->newton_iters += NEWTON_MAXIT;
 		}
 		if (ok) {
 			*px = x[0];
@@ -688,6 +705,7 @@ static int collect(struct packer *p, double px, double py, double r)
 	int ix = cell_of(px, p->gx, p->ginv, p->gnx);
 	int iy = cell_of(py, p->gy, p->ginv, p->gny);
 	int onfront = 0;
+	double round = slack(0, px, py);
 
 	if (++p->serial == 0) {         /* wrapped: stale marks could match */
 		memset(p->hit, 0, (size_t)p->n * sizeof *p->hit);
@@ -701,7 +719,7 @@ static int collect(struct packer *p, double px, double py, double r)
 				double rj = p->r[j];
 				/* a reflex vertex (rj = 0) takes the disk's own
 				 * tolerance, so a disk touching it is no overlap */
-				double d = r + rj - TOUCH * (rj > 0 && rj < r ? rj : r);
+				double d = r + rj - TOUCH * (rj > 0 && rj < r ? rj : r) - round;
 				if (p->shape ? dx * dx + dy * dy < (r + rj) * (r + rj) &&
 					       shape_overlap(p, j, px, py)
 					     : dx * dx + dy * dy < d * d) {
@@ -712,9 +730,9 @@ static int collect(struct packer *p, double px, double py, double r)
 			}
 	for (int k = 0; k < p->nw; k++) {
 		const struct wall *w = &p->w[k];
-		if (p->shape ? shape_wall_overlap(p, k, px, py, TOUCH * p->W.size)
-		    : w->seg ? seg_dist(w, px, py) < r * (1 - TOUCH)
-			     : (px - w->qx) * w->nx + (py - w->qy) * w->ny < r * (1 - TOUCH)) {
+		if (p->shape ? shape_wall_overlap(p, k, px, py, slack(p->W.size, px, py))
+		    : w->seg ? seg_dist(w, px, py) < r * (1 - TOUCH) - round
+			     : (px - w->qx) * w->nx + (py - w->qy) * w->ny < r * (1 - TOUCH) - round) {
 			if (ov_push(p, k))
 				return -1;
 			onfront += p->next[k] != OFF;
@@ -949,18 +967,25 @@ static void classify(const struct packer *p, int c, int n, long room,
 	*pj = j;
 }
 
-/* Where an object holds up a disk centred at (px, py): a disk at its
- * centre, a wall at the foot of the perpendicular (the contact point). */
-static void support_point(const struct packer *p, int k, double px, double py,
-			  double *sx)
+/* Where object k (h: 0 the segment's start, 1 its end) holds up the body
+ * centred at (px, py): the x of the contact.  A disk: on a wall the foot
+ * of the perpendicular from the centre, on a disk its centre (the same
+ * vertical order as the contact point, Fig. 5.9).  A polygon or an
+ * ellipse: where it really touches, its support point towards the wall
+ * (not below its centre unless the wall's normal is one of its axes), or
+ * the contact the last tangent found on a body. */
+static double support_x(const struct packer *p, int k, int h, double px, double py)
 {
 	if (k < p->nw) {
 		const struct wall *w = &p->w[k];
-		double d = (px - w->qx) * w->nx + (py - w->qy) * w->ny;
-		*sx = px - d * w->nx;
-	} else {
-		*sx = p->x[k];
+		double tx, ty;
+		if (p->shape) {
+			wall_touch(p, k, px, py, &tx, &ty);
+			return tx;
+		}
+		return px - ((px - w->qx) * w->nx + (py - w->qy) * w->ny) * w->nx;
 	}
+	return p->shape ? p->cpx[h] : p->x[k];
 }
 
 /* Fig. 5.9: the disk rests on c and n when the vertical through its centre
@@ -970,14 +995,7 @@ static void support_point(const struct packer *p, int k, double px, double py,
  * misses, so the front can move that way (downhill). */
 static int stability(const struct packer *p, int c, int n, double px, double py)
 {
-	double a, b;
-	support_point(p, c, px, py, &a);
-	support_point(p, n, px, py, &b);
-	/* a body's support is where it touches (the last tangent's) */
-	if (p->shape && c >= p->nw)
-		a = p->cpx[0];
-	if (p->shape && n >= p->nw)
-		b = p->cpx[1];
+	double a = support_x(p, c, 0, px, py), b = support_x(p, n, 1, px, py);
 	if (px < a)
 		return UNSTABLE_BWD;
 	if (px > b)
@@ -993,7 +1011,8 @@ static int stability(const struct packer *p, int c, int n, double px, double py)
  * overlap the front check cannot place, or -- gravity -- an unstable seat)
  * costs nothing: no bridge over a pocket that stays empty, no real contact
  * hidden behind the front.  On return *c -> *n is the segment last tried
- * and, when PLACED, *i the new disk.  -1 without memory. */
+ * and, when PLACED, *i the new disk.  -1 without memory, -2 for a
+ * candidate not finite (check_spec's ranges should make that impossible). */
 static int attempt(struct packer *p, int *pc, int *pn, double r, int *pi)
 {
 	int c = *pc, n = *pn, res;
@@ -1011,6 +1030,8 @@ static int attempt(struct packer *p, int *pc, int *pn, double r, int *pi)
 			res = FAIL;
 			break;
 		}
+		if (!(isfinite(px) && isfinite(py)))
+			return -2;      /* a NaN would pass every overlap test */
 		if (p->poly) {
 			/* a disk touching a wall's line beyond a reflex end
 			 * touches no wall: go on from that vertex instead, a
@@ -1352,7 +1373,7 @@ static int advance(struct packer *p, gsl_rng *rng, int seg)
 			seg = p->prev[c] >= 0 ? p->prev[c] : c;
 			break;
 		default:
-			return -1;
+			return res;     /* -1 without memory, -2 not finite */
 		}
 	}
 	return 0;
@@ -1421,15 +1442,13 @@ static int meet(const double *a, const double *b, const double *c, const double 
 	       (o4 == 0 && on_seg(c[0], c[1], d[0], d[1], b[0], b[1]));
 }
 
-/* Twice the signed area of the n-gon v (shoelace, positive anticlockwise),
- * taken about its first vertex: the terms then have the polygon's size,
- * not its distance from the origin, and do not cancel. */
+/* Twice the signed area of the n-gon v (x0 y0 x1 y1 ...; positive
+ * anticlockwise), by the library's shoelace about the first vertex. */
 static double twice_area(const double *v, int n)
 {
-	double a2 = 0;
-	for (int i = 1; i + 1 < n; i++)
-		a2 += (v[2 * i] - v[0]) * (v[2 * i + 3] - v[1]) - (v[2 * i + 1] - v[1]) * (v[2 * i + 2] - v[0]);
-	return a2;
+	dem_area_props_t pr;
+	dem_polygon_props(n, (const double (*)[2])v, &pr);
+	return 2 * pr.A;
 }
 
 int dem_front_polygon_check(const double *v, int n, dem_error_t *e)
@@ -1479,6 +1498,40 @@ int dem_front_polygon_check(const double *v, int n, dem_error_t *e)
 	return DEM_OK;
 }
 
+/* The lengths the packer may meet: lengths are squared (distances, radii,
+ * areas) and an ellipse's shape matrix has the fourth power of its size
+ * as determinant, so the semi-axes, and the coordinates with a few
+ * bounding radii added, must keep those powers finite and normal (64 of
+ * room for sums and products); an overflow gives infinities and NaNs, and
+ * a NaN passes every "overlap > tol" test.  And the coordinates' rounding
+ * (ROUND of their magnitude, allowed as overlap) must stay below 1e-3 of
+ * the smallest semi-axis, or no disk could be placed to a meaning. */
+static int check_range(const dem_front_spec_t *s, dem_error_t *e)
+{
+	int pw = s->shape == DEM_FRONT_ELLIPSE ? 4 : 2;
+	double al = s->shape != DEM_FRONT_DISK && s->ratio.rmax > 1 ? sqrt(s->ratio.rmax) : 1;
+	double big = s->law.rmax * al, small = s->law.rmin / al, mag = 0;
+	double top = pow(DBL_MAX, 1.0 / pw) / 64, bottom = pow(DBL_MIN, 1.0 / pw) * 64;
+	if (s->polygon)
+		for (int i = 0; i < 2 * s->npolygon; i++)
+			mag = fmax(mag, fabs(s->polygon[i]));
+	else
+		for (int d = 0; d < 2; d++)
+			mag = fmax(mag, fmax(fabs(s->lo[d]), fabs(s->hi[d])));
+	if (!(small >= bottom && big <= top && mag + 8 * big <= top))
+		return dem_error_set(e, DEM_EINPUT,
+				     "advancing front: lengths out of range: semi-axes %g to %g, coordinates "
+				     "up to %g; expected semi-axes from %g and lengths up to %g (their %s "
+				     "must stay finite and normal)", small, big, mag, bottom, top,
+				     pw == 4 ? "fourth powers" : "squares");
+	if (!(ROUND * mag <= 1e-3 * small))
+		return dem_error_set(e, DEM_EINPUT,
+				     "advancing front: coordinates out of range for the radii: at %g from "
+				     "the origin they are rounded to %g, more than 1e-3 of the smallest "
+				     "semi-axis %g", mag, ROUND * mag, small);
+	return DEM_OK;
+}
+
 static int check_spec(const dem_front_spec_t *s, dem_error_t *e)
 {
 	if (s->polygon) {
@@ -1519,7 +1572,7 @@ static int check_spec(const dem_front_spec_t *s, dem_error_t *e)
 		return dem_error_set(e, DEM_EINPUT,
 				     "advancing front: aspect ratios must satisfy 1 <= min <= max (got %g, %g)",
 				     s->ratio.rmin, s->ratio.rmax);
-	return DEM_OK;
+	return check_range(s, e);
 }
 
 /* The grid covers the domain and a margin of two cells (disks of the
@@ -1589,8 +1642,9 @@ static double body_area(const struct packer *p, int i)
 {
 	if (!p->shape)
 		return DEM_PI * p->r[i] * p->r[i];
+	/* the unit m-gon stretched by a and b */
 	double ab = p->ea[i] * p->eb[i];
-	return p->shape == DEM_FRONT_ELLIPSE ? DEM_PI * ab : ab * 0.5 * p->m * sin(2 * DEM_PI / p->m);
+	return p->shape == DEM_FRONT_ELLIPSE ? DEM_PI * ab : ab * p->unit_area;
 }
 
 static int pack(const dem_front_spec_t *s, gsl_rng *rng, dem_front_emit_fn emit,
@@ -1615,11 +1669,10 @@ static int pack(const dem_front_spec_t *s, gsl_rng *rng, dem_front_emit_fn emit,
 	p->shape = s->shape;
 	if (p->shape) {
 		p->m = s->sides;
-		for (int k = 0; k < p->m; k++) {    /* a side flat at the bottom */
-			double phi = -0.5 * DEM_PI + DEM_PI / p->m + 2 * DEM_PI * k / p->m;
-			p->tc[k] = cos(phi);
-			p->ts[k] = sin(phi);
-		}
+		dem_area_props_t pr;
+		dem_polygon_regular(p->m, 1, 1, p->unit);
+		dem_polygon_props(p->m, (const double (*)[2])p->unit, &pr);
+		p->unit_area = pr.A;
 		p->rb = s->law.rmax * (s->ratio.rmin > 0 ? sqrt(s->ratio.rmax) : 1);
 		if (!(p->buf = malloc(BUFPTS * sizeof *p->buf))) {
 			rc = dem_error_nomem(e, "advancing front loci");
@@ -1656,8 +1709,12 @@ static int pack(const dem_front_spec_t *s, gsl_rng *rng, dem_front_emit_fn emit,
 	} else {
 		start_open(p, &seg);
 	}
-	if (advance(p, rng, seg)) {
-		rc = p->n == INT_MAX
+	if ((rc = advance(p, rng, seg))) {
+		rc = rc == -2
+			? dem_error_set(e, DEM_ENUMERIC, "advancing front: a position not finite "
+					"(after %zu bodies); the radii or the domain out of range?",
+					st->placed)
+			: p->n == INT_MAX
 			? dem_error_set(e, DEM_EIO, "advancing front: more than %d disks", INT_MAX)
 			: dem_error_nomem(e, "advancing front disks");
 		goto out;

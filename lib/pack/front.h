@@ -18,8 +18,12 @@
  *           emitted rests on emitted disks or walls.
  *
  * Guarantees: no two disks emitted overlap by more than 1e-10 of the
- * smaller radius, and every disk emitted lies inside the rectangle (to the
- * same relative tolerance).  Overlap checks go through a uniform grid of
+ * smaller radius plus the rounding of their coordinates (64 ulps of their
+ * magnitude, 64 DBL_EPSILON max(|x|, |y|): negligible near the origin,
+ * the larger term some 10^6 radii from it), and every disk emitted lies
+ * inside the rectangle (to 1e-10 of its radius and the same rounding).
+ * So a packing of a domain moved far from the origin is the packing of
+ * the domain at the origin, moved.  Overlap checks go through a uniform grid of
  * cells as wide as the largest disk, so the cost is O(N) for N disks; the
  * forward/backward front check can be limited to k segments (Ch. 5.2.4).
  * Memory is O(N): all disks are kept until the culling at the end.
@@ -28,7 +32,9 @@
  * touching a wall is found as a disk touching a line.
  *
  * Polygons and ellipses (Ch. 5.3-5.4): the same front, forms, domains and
- * gravity rule with convex bodies placed by translation only, each drawn
+ * gravity rule (a body's support on a wall is where it touches it, its
+ * support point towards the wall, on a body the contact of the tangent
+ * solve) with convex bodies placed by translation only, each drawn
  * with a size r (the radius law), an aspect ratio alpha >= 1 (a law of
  * the same kinds) and a uniform random rotation theta, with semi-axes
  * a = r sqrt(alpha), b = r / sqrt(alpha) (so a b = r^2):
@@ -46,9 +52,10 @@
  * after the last the crossing of the outer bounds itself is taken (a
  * fall-back: the body then touches neither exactly but overlaps neither,
  * as the bounds lie outside the loci).  Overlap: polygons by the depth of
- * the centre in the Minkowski sum (the tolerance 1e-10 of the smaller
- * size), ellipses by the Perram-Wertheim function (overlap when below
- * (1 - 1e-10)^2), each after the bounding circles.
+ * the centre in the Minkowski sum (the tolerance t: 1e-10 of the smaller
+ * size and the rounding of the coordinates, as for disks), ellipses by
+ * the Perram-Wertheim function (overlap when below (1 - t / size)^2),
+ * each after the bounding circles.
  *
  * Polygons (open form, Ch. 5.2.4, Figs. 5.12-5.13): every edge is a wall,
  * checked as a segment; the front starts as the chain of edges from the
@@ -121,7 +128,7 @@ typedef struct dem_front_stats {
 	size_t front_max;       /* the largest front, in disks and walls */
 	/* ellipses: the contact position by Newton's method */
 	size_t newton;          /* solves started (one per level tried) */
-	size_t newton_iters;    /* their steps */
+	size_t newton_iters;    /* their steps, converged or not */
 	size_t newton_failed;   /* solves refused (not converged, or the
 				 * root outside the bounds' neighbourhood) */
 	size_t fallbacks;       /* positions taken from the outer bounds
@@ -153,7 +160,11 @@ int dem_front_polygon_check(const double *v, int n, dem_error_t *e);
  * writer can put the density in its header.  Returns DEM_OK; DEM_EINPUT
  * for a bad spec (empty rectangle, bad polygon, a polygon or gravity
  * with the closed form, radii not 0 < rmin <= rmax, a negative check
- * limit); DEM_EIO when memory runs
+ * limit; lengths out of range: semi-axes or coordinates whose squares --
+ * ellipses: fourth powers -- would overflow or underflow, with 64 of
+ * room, or coordinates so far from the origin that their rounding, 64
+ * ulps, exceeds 1e-3 of the smallest semi-axis); DEM_ENUMERIC for a
+ * position not finite (which those ranges exclude); DEM_EIO when memory runs
  * out or the rectangle holds too many disks (more than 2^31 - 1); or
  * emit's nonzero value. */
 int dem_pack_front(const dem_front_spec_t *s, gsl_rng *rng,

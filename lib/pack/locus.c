@@ -212,31 +212,36 @@ void dem_locus_outer(const dem_locus_t *L, int K, double (*v)[2])
 }
 
 int dem_locus_meet(const dem_locus_t *A, const dem_locus_t *B, double *u, double *v,
-		   double tol, int maxit)
+		   double tol, int maxit, int *steps)
 {
-	for (int it = 0; it <= maxit; it++) {
+	int it, conv = 0;
+	for (it = 0; it <= maxit; it++) {
 		double a[2], da[2], b[2], db[2];
 		dem_locus_eval(A, *u, a, da);
 		dem_locus_eval(B, *v, b, db);
 		double g0 = a[0] - b[0], g1 = a[1] - b[1];
 		if (!(isfinite(g0) && isfinite(g1)))
-			return -1;
-		if (hypot(g0, g1) <= tol)
-			return it;
+			break;
+		if (hypot(g0, g1) <= tol) {
+			conv = 1;
+			break;
+		}
 		if (it == maxit)
 			break;
 		/* [da, -db] (du, dv) = -g */
 		double det = -da[0] * db[1] + db[0] * da[1];
 		if (!(fabs(det) > 0))
-			return -1;
+			break;
 		double du = (g0 * db[1] - g1 * db[0]) / det;
 		double dv = (da[1] * g0 - da[0] * g1) / det;
 		/* a step of more than a radian on a curve leaves the
 		 * neighbourhood the bounds gave: not converging */
 		if (!(fabs(du) < 1 || A->line) || !(fabs(dv) < 1 || B->line))
-			return -1;
+			break;
 		*u += du;
 		*v += dv;
 	}
-	return -1;
+	if (steps)
+		*steps = it;
+	return conv ? it : -1;
 }

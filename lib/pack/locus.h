@@ -80,8 +80,10 @@ void dem_locus_outer(const dem_locus_t *L, int K, double (*v)[2]);
 
 /* Newton's method on A(u) = B(v) from (u, v): at most maxit steps, until
  * |A(u) - B(v)| <= tol.  Returns the steps taken, or -1 when it does not
- * converge (the Jacobian singular, a step not finite, maxit reached). */
+ * converge (the Jacobian singular, a step not finite or of more than a
+ * radian on a curve, maxit reached).  *steps (may be NULL): the steps
+ * taken either way, for an honest count of the work. */
 int dem_locus_meet(const dem_locus_t *A, const dem_locus_t *B, double *u, double *v,
-		   double tol, int maxit);
+		   double tol, int maxit, int *steps);
 
 #endif

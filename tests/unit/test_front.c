@@ -20,7 +20,13 @@
  *     and every edge, as a segment, at least r(1 - 1e-9) away; under
  *     gravity every disk is held up by Fig. 5.9 with edges as supports at
  *     their contact points; the density against the polygon's area
- *     (shoelace) is reported; bad polygons are refused.
+ *     (shoelace) is reported; bad polygons are refused;
+ *   - translation: a rectangle moved by 2^20 (1, -1) gives the disks at the
+ *     origin moved, within 1e-6 of the radius (the tolerance adds the
+ *     rounding of the coordinates);
+ *   - scale: radii or coordinates whose squares overflow or underflow, or
+ *     coordinates rounded to more than 1e-3 of the radii, are refused; a
+ *     scene scaled by 2^300 or 2^-300 gives the disks scaled, bit for bit.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -277,6 +283,153 @@ static void test_hard_domains(void **state)
 					assert_int_equal(out.n, 0);
 				set_free(&out);
 			}
+}
+
+/* Translation (issue: the overlap tolerance was 1e-10 of the radius in
+ * absolute terms, below the rounding of coordinates some 10^6 radii from
+ * the origin): the packing of the rectangle moved by (X, Y) = 2^20 (1, -1)
+ * (exactly representable, so the domain moves exactly) is the packing at
+ * the origin moved by (X, Y): the same disks in the same order, each
+ * centre within 1e-6 of its radius of the moved one, and as many segments
+ * given up.  Equal disks in the closed form (the hexagonal lattice, all
+ * contacts) are the sharpest case.  (Not the same disks placed: there the
+ * lattice puts centres exactly on the rectangle's sides, and whether such
+ * a disk counts as outside, to stop the front, depends on rounding; it is
+ * culled either way.) */
+static void test_far_from_origin(void **state)
+{
+	(void)state;
+	const double X = 1048576, Y = -1048576;
+	for (int c = 0; c < 4; c++) {
+		dem_front_spec_t s = spec(c < 2 ? DEM_FRONT_CLOSED : DEM_FRONT_OPEN, 30, 20,
+					  c == 0 ? DEM_RADIUS_MONO : DEM_RADIUS_URD, 0.5, c == 0 ? 1 : 2);
+		s.gravity = c == 3;
+		struct set a, b;
+		dem_front_stats_t sa, sb;
+		char label[64];
+		snprintf(label, sizeof label, "%s%s%s, moved by 2^20", dem_front_form_names[s.form],
+			 c == 0 ? " equal disks" : "", s.gravity ? " gravity" : "");
+		run(&s, 8, &a, &sa);
+		s.lo[0] += X, s.hi[0] += X, s.lo[1] += Y, s.hi[1] += Y;
+		run(&s, 8, &b, &sb);
+		if (b.n != a.n || sb.failed != sa.failed)
+			fail_msg("%s: %zu disks (%zu placed, %zu failed), at the origin %zu (%zu, %zu)",
+				 label, b.n, sb.placed, sb.failed, a.n, sa.placed, sa.failed);
+		for (size_t i = 0; i < a.n; i++) {
+			assert_true(b.r[i] == a.r[i]);
+			if (fabs(b.x[i] - X - a.x[i]) > 1e-6 * a.r[i] ||
+			    fabs(b.y[i] - Y - a.y[i]) > 1e-6 * a.r[i])
+				fail_msg("%s: disk %zu at (%.17g, %.17g), at the origin (%.17g, %.17g)",
+					 label, i, b.x[i] - X, b.y[i] - Y, a.x[i], a.y[i]);
+		}
+		check_packing(&b, &s, label);
+		print_message("# %s: %zu disks (%zu placed, at the origin %zu), the same as at the "
+			      "origin\n", label, b.n, sb.placed, sa.placed);
+		set_free(&a);
+		set_free(&b);
+	}
+	/* polygons of whole vertices (they move exactly too): the L and the
+	 * hopper of test_polygons, with and without gravity */
+	static const double L[12] = {0, 0, 0, 20, 10, 20, 10, 10, 20, 10, 20, 0};
+	static const double H[12] = {0, 20, 8, 4, 8, 0, 12, 0, 12, 4, 20, 20};
+	for (int c = 0; c < 4; c++) {
+		const double *v0 = c < 2 ? L : H;
+		double v[12];
+		dem_front_spec_t s = spec(DEM_FRONT_OPEN, 1, 1, DEM_RADIUS_URD, 0.3, 2);
+		s.polygon = v;
+		s.npolygon = 6;
+		s.gravity = c % 2;
+		struct set a, b;
+		dem_front_stats_t sa, sb;
+		memcpy(v, v0, sizeof v);
+		run(&s, 9, &a, &sa);
+		for (int k = 0; k < 6; k++)
+			v[2 * k] += X, v[2 * k + 1] += Y;
+		run(&s, 9, &b, &sb);
+		if (b.n != a.n || sb.failed != sa.failed)
+			fail_msg("%s%s: %zu disks (%zu failed), at the origin %zu (%zu)", c < 2 ? "L" : "hopper",
+				 s.gravity ? " gravity" : "", b.n, sb.failed, a.n, sa.failed);
+		for (size_t i = 0; i < a.n; i++)
+			if (!(b.r[i] == a.r[i] && fabs(b.x[i] - X - a.x[i]) <= 1e-6 * a.r[i] &&
+			      fabs(b.y[i] - Y - a.y[i]) <= 1e-6 * a.r[i]))
+				fail_msg("%s: disk %zu differs", c < 2 ? "L" : "hopper", i);
+		check_packing(&b, NULL, "polygon moved");
+		print_message("# %s%s, moved by 2^20: %zu disks, the same as at the origin\n",
+			      c < 2 ? "L" : "hopper", s.gravity ? " gravity" : "", b.n);
+		set_free(&a);
+		set_free(&b);
+	}
+}
+
+static int count_body(void *ctx, const dem_front_body_t *b)
+{
+	(void)b;
+	++*(size_t *)ctx;
+	return 0;
+}
+
+/* Extreme scales.  The packer squares lengths (distances, radii), so
+ * radii and coordinates whose squares overflow (or underflow) give
+ * infinities and NaNs, and a NaN passes every "overlap > tol" test: such
+ * scenes are refused as bad input, with nothing emitted.  Within range
+ * the method has no scale: the same scene scaled by 2^300 or 2^-300
+ * (exact in binary) gives the same disks scaled, bit for bit. */
+static void test_extreme_scales(void **state)
+{
+	(void)state;
+	const double huge[][3] = {      /* rmin, the domain's side, its lower corner */
+		{1e200, 4e201, 0},      /* radii whose squares overflow */
+		{1e154, 4e155, 0},      /* squared sums and distances do */
+		{1e-3, 0.4, 1e12},      /* coordinates rounded to more than 1e-3 r */
+		{1e-170, 4e-169, 0},    /* squares underflow to zero */
+	};
+	gsl_rng *g = dem_rng_derive(1, 0);
+	for (int f = 0; f < 2; f++)
+		for (size_t k = 0; k < sizeof huge / sizeof huge[0]; k++) {
+			dem_front_spec_t s = spec((dem_front_form_t)f, huge[k][1], huge[k][1],
+						  DEM_RADIUS_URD, huge[k][0], 2);
+			s.lo[0] += huge[k][2], s.hi[0] += huge[k][2];
+			struct set out = {0};
+			dem_error_t e;
+			dem_error_clear(&e);
+			int rc = dem_pack_front(&s, g, collect, &out, NULL, &e);
+			for (size_t i = 0; i < out.n; i++)
+				if (!(isfinite(out.x[i]) && isfinite(out.y[i])))
+					fail_msg("case %zu: disk %zu at (%g, %g)", k, i, out.x[i], out.y[i]);
+			if (rc != DEM_EINPUT)
+				fail_msg("case %zu (%s, radii %g): %d, %zu disks", k,
+					 dem_front_form_names[f], huge[k][0], rc, out.n);
+			assert_int_equal(out.n, 0);
+			if (!strstr(e.msg, "range"))
+				fail_msg("case %zu: %s", k, e.msg);
+			set_free(&out);
+			/* the same through dem_pack_front_bodies, as ellipses */
+			size_t nb = 0;
+			s.shape = DEM_FRONT_ELLIPSE;
+			dem_error_clear(&e);
+			assert_int_equal(dem_pack_front_bodies(&s, g, count_body, &nb, NULL, &e), DEM_EINPUT);
+			assert_int_equal(nb, 0);
+		}
+	for (int f = 0; f < 3; f++)
+		for (int sg = -1; sg <= 1; sg += 2) {
+			const double k = ldexp(1, 300 * sg);
+			dem_front_spec_t s = spec(f ? DEM_FRONT_OPEN : DEM_FRONT_CLOSED, 30, 20,
+						  DEM_RADIUS_URD, 0.5, 2);
+			s.gravity = f == 2;
+			struct set a, b;
+			dem_front_stats_t st;
+			run(&s, 6, &a, &st);
+			s.hi[0] *= k, s.hi[1] *= k, s.law.rmin *= k, s.law.rmax *= k;
+			run(&s, 6, &b, &st);
+			assert_int_equal(b.n, a.n);
+			assert_true(a.n > 100);
+			for (size_t i = 0; i < a.n; i++)
+				if (b.x[i] != a.x[i] * k || b.y[i] != a.y[i] * k || b.r[i] != a.r[i] * k)
+					fail_msg("form %d, scale 2^%d: disk %zu differs", f, 300 * sg, i);
+			set_free(&a);
+			set_free(&b);
+		}
+	gsl_rng_free(g);
 }
 
 /* Fig. 5.10(a): equal disks, closed form, give the hexagonal lattice. */
@@ -774,6 +927,8 @@ int main(void)
 		cmocka_unit_test(test_open),
 		cmocka_unit_test(test_large),
 		cmocka_unit_test(test_hard_domains),
+		cmocka_unit_test(test_far_from_origin),
+		cmocka_unit_test(test_extreme_scales),
 		cmocka_unit_test(test_hexagonal),
 		cmocka_unit_test(test_gravity),
 		cmocka_unit_test(test_seed),

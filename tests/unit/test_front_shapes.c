@@ -4,7 +4,9 @@
  * References:
  *   - the checker itself (exact2d.h): Wang-Wang-Kim's cubic against a
  *     dense sampling of the two boundaries on random pairs clearly apart
- *     or clearly overlapping, and touching circles;
+ *     or clearly overlapping, at aspect ratios 1 to 5 and 1 to 1000;
+ *     touching circles, and touching ellipses built in closed form at
+ *     aspect ratios 1 to 1000, shrunk or grown by 1e-9;
  *   - Minkowski sums: rectangles give the rectangle of summed sides; a
  *     triangle plus itself turned through 180 degrees is a hexagon of six
  *     times its area; a point and a segment; random pairs: at most
@@ -12,14 +14,22 @@
  *   - Perram-Wertheim: for two circles F = d^2 / (r1 + r2)^2, for two
  *     ellipses scaled by sqrt(F) the sampled boundaries touch; the locus of
  *     a circle round a circle is the circle of radius r1 + r2; Newton on
- *     two circle loci against the circle-circle intersection;
+ *     two circle loci against the circle-circle intersection; Newton's
+ *     step count when it fails (0 from a singular start or a first step
+ *     of more than a radian, worked by hand; maxit at the limit);
  *   - packings: no two bodies overlap by the independent exact tests
  *     (exact2d.h: separating axes for polygons, WWK for ellipses, each
  *     allowing 1e-9 of the size), on every pair whose bounding boxes meet
  *     (D-cell, checked against brute force in test_detect); every body
  *     inside the rectangle (its points, or its extents, to 1e-9); open,
  *     closed and gravity forms, an L-shaped polygon; 10^5 bodies of each
- *     shape with aspect ratios 1 to 5 (fewer under the sanitizers).
+ *     shape with aspect ratios 1 to 5 (fewer under the sanitizers);
+ *   - gravity (Fig. 5.9) with a body's true contact on a wall: a body in a
+ *     bottom corner has its lowest point (closed form) on the side wall's
+ *     side of its centre;
+ *   - translation: a rectangle moved by 2^20 (1, -1) gives the bodies at
+ *     the origin moved, within 1e-6 of the size;
+ *   - polygon areas in the statistics against a b (m/2) sin(2 pi/m).
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -27,11 +37,13 @@
 #include <stdint.h>
 #include <cmocka.h>
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "contact/polygon.h"
 #include "core/rng.h"
 #include "detect/detect.h"
 #include "pack/front.h"
@@ -41,6 +53,9 @@
 #include "slow.h"
 
 #define EPS 1e-9
+/* The rounding of coordinates that front.h allows as overlap besides:
+ * 64 ulps of their magnitude (at most 8.5e-12 at 600 from the origin). */
+#define ROUNDING (64 * DBL_EPSILON)
 
 /* ---- the checker and the geometry ------------------------------------- */
 
@@ -89,6 +104,76 @@ static void test_wwk_against_sampling(void **state)
 	assert_false(x2_wwk_overlap(0, 0, 1, 1, 0, 3, 0, 2, 2, 0, 1e-9));
 	assert_true(x2_wwk_overlap(0, 0, 1, 1, 0, 3 - 1e-6, 0, 2, 2, 0, 1e-9));
 	assert_true(apart > 300 && over > 300);
+	gsl_rng_free(g);
+}
+
+/* The checker at aspect ratios 1 to 1000 (log-uniform), against the
+ * sampled boundaries (n points a boundary, enough that two samples are
+ * closer than a tenth of the thinner semi-axis): the cubic's coefficients
+ * spread as the square of the ratio there, and the checker must still
+ * call every pair clearly apart apart and every pair clearly overlapping
+ * an overlap; and pairs touching by construction, shrunk or grown by
+ * 1e-9, apart or overlapping. */
+static void test_wwk_thin(void **state)
+{
+	(void)state;
+	gsl_rng *g = dem_rng_derive(12, 0);
+	int apart = 0, over = 0, thin = 0;
+	int ntry = SLOW_CASES(2000, 400);
+	for (int t = 0; t < ntry; t++) {
+		double al1 = pow(1000, gsl_rng_uniform(g)), al2 = pow(1000, gsl_rng_uniform(g));
+		double a1 = 0.5 + gsl_rng_uniform(g), b1 = a1 / al1;
+		double a2 = 0.5 + gsl_rng_uniform(g), b2 = a2 / al2;
+		double t1 = 7 * gsl_rng_uniform(g), t2 = 7 * gsl_rng_uniform(g);
+		double x1 = 10 + 2 * gsl_rng_uniform(g), y1 = -5 + 2 * gsl_rng_uniform(g);
+		double x2 = 10 + 2 * gsl_rng_uniform(g), y2 = -5 + 2 * gsl_rng_uniform(g);
+		int n = (int)(20 * X2_PI * fmax(a1, a2) / fmin(b1, b2)) + 1000;
+		double m12 = sample_min(x1, y1, a1, b1, t1, x2, y2, a2, b2, t2, n);
+		double m21 = sample_min(x2, y2, a2, b2, t2, x1, y1, a1, b1, t1, n);
+		double dc = sample_min(x1, y1, 1e-9, 1e-9, 0, x2, y2, a2, b2, t2, 1);
+		int wwk = x2_wwk_overlap(x1, y1, a1, b1, t1, x2, y2, a2, b2, t2, 0);
+		thin += fmax(al1, al2) >= 50;
+		if (fmin(m12, m21) < -0.02 || dc < 0) {
+			if (!wwk)
+				fail_msg("pair %d (aspect %.0f, %.0f): sampled overlap (%g), WWK says apart",
+					 t, al1, al2, fmin(m12, m21));
+			over++;
+		} else if (fmin(m12, m21) > 0.02) {
+			if (wwk)
+				fail_msg("pair %d (aspect %.0f, %.0f): sampled apart (%g), WWK says overlap",
+					 t, al1, al2, fmin(m12, m21));
+			apart++;
+		}
+	}
+	print_message("# thin ellipses: %d pairs, %d apart, %d overlapping, %d with an aspect "
+		      "ratio of 50 or more\n", ntry, apart, over, thin);
+	assert_true(apart > ntry / 10 && over > ntry / 10 && thin > ntry / 3);
+	/* touching pairs in closed form, as the packings' are: ellipse 2's
+	 * support point in a direction -n put on ellipse 1's in n (the
+	 * support point of R diag(a^2, b^2) R^T = M in n is M n / sqrt(n^T
+	 * M n)); shrunk by 1e-9 they are apart, grown by 1e-9 they overlap */
+	for (int t = 0; t < 5000; t++) {
+		double al1 = pow(1000, gsl_rng_uniform(g)), al2 = pow(1000, gsl_rng_uniform(g));
+		double e[2][3], sp[2][2], u = 2 * X2_PI * gsl_rng_uniform(g);
+		for (int k = 0; k < 2; k++) {
+			e[k][0] = 0.5 + gsl_rng_uniform(g);
+			e[k][1] = e[k][0] / (k ? al2 : al1);
+			e[k][2] = 7 * gsl_rng_uniform(g);
+			double c = cos(e[k][2]), sn = sin(e[k][2]), a2 = e[k][0] * e[k][0], b2 = e[k][1] * e[k][1];
+			double n0 = k ? -cos(u) : cos(u), n1 = k ? -sin(u) : sin(u);
+			double mx = (a2 * c * c + b2 * sn * sn) * n0 + (a2 - b2) * c * sn * n1;
+			double my = (a2 - b2) * c * sn * n0 + (a2 * sn * sn + b2 * c * c) * n1;
+			double h = sqrt(n0 * mx + n1 * my);
+			sp[k][0] = mx / h, sp[k][1] = my / h;
+		}
+		double x1 = 10 + 2 * gsl_rng_uniform(g), y1 = -5 + 2 * gsl_rng_uniform(g);
+		double x2 = x1 + sp[0][0] - sp[1][0], y2 = y1 + sp[0][1] - sp[1][1];
+		for (int sg = -1; sg <= 1; sg += 2)
+			if (x2_wwk_overlap(x1, y1, e[0][0], e[0][1], e[0][2], x2, y2, e[1][0], e[1][1],
+					   e[1][2], sg * 1e-9) != (sg < 0))
+				fail_msg("touching pair %d (aspect %.0f, %.0f) %s by 1e-9: WWK says %s", t,
+					 al1, al2, sg > 0 ? "shrunk" : "grown", sg > 0 ? "overlap" : "apart");
+	}
 	gsl_rng_free(g);
 }
 
@@ -184,7 +269,7 @@ static void test_ellipse_geometry(void **state)
 	dem_locus_eval(&A, 0.7, x, NULL);
 	assert_true(fabs(hypot(x[0], x[1]) - 1.5) < 1e-14);
 	double u = 1.0, v = 2.0;
-	assert_true(dem_locus_meet(&A, &B, &u, &v, 1e-14, 30) >= 0);
+	assert_true(dem_locus_meet(&A, &B, &u, &v, 1e-14, 30, NULL) >= 0);
 	dem_locus_eval(&A, u, x, NULL);
 	assert_true(fabs(x[0] - 1) < 1e-13 && fabs(x[1] - sqrt(1.5 * 1.5 - 1)) < 1e-13);
 	/* the outer bound lies outside the locus: every point of it */
@@ -297,6 +382,46 @@ static void test_ellipse_in_polygon(void **state)
 }
 
 
+/* Newton's count (dem_locus_meet's steps, summed into the packer's
+ * newton_iters) is the steps taken, also when the solve fails, not the
+ * limit: a singular start (two parallel lines) fails before any step, a
+ * limit of maxit ends after maxit steps, a converged solve reports the
+ * steps it returns. */
+static void test_newton_count(void **state)
+{
+	(void)state;
+	dem_locus_t P = {0}, Q = {0};
+	P.line = Q.line = 1;
+	P.t[0] = Q.t[0] = 1;
+	Q.c[1] = 1;                     /* y = 0 and y = 1: never meet */
+	double u = 0, v = 0;
+	int steps = -5;
+	assert_int_equal(dem_locus_meet(&P, &Q, &u, &v, 1e-14, 30, &steps), -1);
+	assert_int_equal(steps, 0);
+	/* two circles' loci (radius 1.5 about 0 and about (2, 0)) meet at
+	 * (1, sqrt(1.25)): from a start a radian off, one step is not enough
+	 * for 1e-14, and maxit = 1 stops after it */
+	dem_locus_t A = {0}, B;
+	dem_ellipse_matrix(1, 1, 1, 0, A.m1);
+	dem_ellipse_matrix(0.5, 0.5, 1, 0, A.m2);
+	B = A;
+	B.c[0] = 2;
+	u = 1.0, v = 2.0;
+	steps = -5;
+	assert_int_equal(dem_locus_meet(&A, &B, &u, &v, 1e-14, 1, &steps), -1);
+	assert_int_equal(steps, 1);
+	u = 1.0, v = 2.0;
+	int it = dem_locus_meet(&A, &B, &u, &v, 1e-14, 30, &steps);
+	assert_true(it > 1);
+	assert_int_equal(steps, it);
+	/* a step of more than a radian is refused before it is taken: from
+	 * (u, v) = (4, 2) the first Newton step is (-0.947, 2.516) (by hand:
+	 * the 2 x 2 system [A'(u), -B'(v)] (du, dv) = B(v) - A(u)) */
+	u = 4.0, v = 2.0;
+	assert_int_equal(dem_locus_meet(&A, &B, &u, &v, 1e-14, 30, &steps), -1);
+	assert_int_equal(steps, 0);
+}
+
 /* Every pair whose bounding boxes meet, by the independent tests; every
  * body inside the rectangle (polygon: its points; ellipse: its extents),
  * or for a polygon domain dom[nd] every point inside it by the crossing
@@ -384,13 +509,17 @@ static void check(const dem_front_spec_t *s, const struct bodies *B, const char 
 		size_t i = pr.p[k].i, j = pr.p[k].j;
 		const dem_front_body_t *p = &B->b[i], *q = &B->b[j];
 		int ov;
+		/* front.h: EPS of the smaller size, and far from the origin
+		 * the rounding of the coordinates, 64 ulps of their magnitude */
+		double size = fmin(sqrt(p->a * p->b), sqrt(q->a * q->b));
+		double far = ROUNDING * fmax(fmax(fabs(p->x[0]), fabs(p->x[1])),
+					     fmax(fabs(q->x[0]), fabs(q->x[1])));
 		if (s->shape == DEM_FRONT_POLYGON)
 			ov = x2_sat_overlap(m, (const double (*)[2])(V + i * m), m,
-					    (const double (*)[2])(V + j * m),
-					    EPS * fmin(sqrt(p->a * p->b), sqrt(q->a * q->b)));
+					    (const double (*)[2])(V + j * m), EPS * size + far);
 		else
 			ov = x2_wwk_overlap(p->x[0], p->x[1], p->a, p->b, p->theta, q->x[0], q->x[1],
-					    q->a, q->b, q->theta, EPS);
+					    q->a, q->b, q->theta, EPS + far / size);
 		if (ov)
 			fail_msg("%s: bodies %zu and %zu overlap", label, i, j);
 	}
@@ -488,6 +617,143 @@ static void test_refused(void **state)
 	gsl_rng_free(g);
 }
 
+/* The lowest point (lx, ly) of a body and its extent in x [xlo, xhi]:
+ * the ellipse (a, b, theta) in closed form, with A = R diag(a^2, b^2) R^T
+ * its support point in the direction -y is -A e_y / sqrt(A11) and its
+ * half-width sqrt(A00); the polygon by its vertices. */
+static void body_bottom(const dem_front_body_t *b, int shape, int m, double *lx, double *ly,
+			double *xlo, double *xhi)
+{
+	if (shape == DEM_FRONT_ELLIPSE) {
+		double c = cos(b->theta), s = sin(b->theta), a2 = b->a * b->a, b2 = b->b * b->b;
+		double a00 = a2 * c * c + b2 * s * s, a01 = (a2 - b2) * c * s, a11 = a2 * s * s + b2 * c * c;
+		*lx = b->x[0] - a01 / sqrt(a11);
+		*ly = b->x[1] - sqrt(a11);
+		*xlo = b->x[0] - sqrt(a00);
+		*xhi = b->x[0] + sqrt(a00);
+		return;
+	}
+	double V[64][2];
+	x2_polygon(b->x[0], b->x[1], b->a, b->b, b->theta, m, V);
+	*lx = V[0][0], *ly = V[0][1], *xlo = *xhi = V[0][0];
+	for (int k = 1; k < m; k++) {
+		if (V[k][1] < *ly)
+			*lx = V[k][0], *ly = V[k][1];
+		*xlo = fmin(*xlo, V[k][0]);
+		*xhi = fmax(*xhi, V[k][0]);
+	}
+}
+
+/* The gravity rule (Fig. 5.9) with the true contact on a wall: a body in
+ * a bottom corner rests on the side wall and the floor, and is stable
+ * only when the vertical through its centre meets the segment between
+ * the two contacts.  The floor contact is the body's lowest point, not the
+ * foot of the perpendicular from its centre (that holds for disks only).
+ * So a body touching the left wall and the floor has its lowest point at
+ * or right of its centre, and one touching the right wall at or left of
+ * it; a tilted ellipse or polygon breaks this half the time when the
+ * rule takes the foot. */
+static void test_gravity_wall_contact(void **state)
+{
+	(void)state;
+	int corners = 0;
+	for (int sh = DEM_FRONT_POLYGON; sh <= DEM_FRONT_ELLIPSE; sh++)
+		for (unsigned long seed = 1; seed <= 30; seed++) {
+			dem_front_spec_t s = spec((dem_front_shape_t)sh, DEM_FRONT_OPEN, 4, 0.3, 1.5, 3);
+			s.gravity = 1;
+			struct bodies B;
+			dem_front_stats_t st;
+			pack(&s, seed, &B, &st);
+			for (size_t i = 0; i < B.n; i++) {
+				const dem_front_body_t *b = &B.b[i];
+				double size = sqrt(b->a * b->b), touch = 1e-6 * size, lx, ly, xlo, xhi;
+				body_bottom(b, sh, s.sides, &lx, &ly, &xlo, &xhi);
+				if (ly - s.lo[1] > touch)
+					continue;
+				int left = xlo - s.lo[0] < touch, right = s.hi[0] - xhi < touch;
+				if ((left && lx < b->x[0] - EPS * size) || (right && lx > b->x[0] + EPS * size))
+					fail_msg("%s %zu (seed %lu) in the %s corner: its lowest point at x = %.9g, "
+						 "its centre at %.9g", dem_front_shape_names[sh], i, seed,
+						 left ? "left" : "right", lx, b->x[0]);
+				corners += left + right;
+			}
+			free(B.b);
+		}
+	/* most packings fill both corners */
+	assert_true(corners >= 60);
+}
+
+/* Translation, as test_far_from_origin in test_front.c: polygons and
+ * ellipses in the rectangle moved by 2^20 (1, -1), about 10^6 sizes from
+ * the origin, are the bodies at the origin moved, each centre within
+ * 1e-6 of its size, with as many segments given up, and no overlap by the
+ * exact tests. */
+static void test_far_from_origin(void **state)
+{
+	(void)state;
+	const double X = 1048576, Y = -1048576;
+	for (int sh = DEM_FRONT_POLYGON; sh <= DEM_FRONT_ELLIPSE; sh++)
+		for (int g = 0; g < 2; g++) {
+			dem_front_spec_t s = spec((dem_front_shape_t)sh, DEM_FRONT_OPEN, 20, 0.5, 2, 3);
+			s.gravity = g;
+			struct bodies A, B;
+			dem_front_stats_t sa, sb;
+			char label[64];
+			snprintf(label, sizeof label, "%s%s, moved by 2^20", dem_front_shape_names[sh],
+				 g ? " gravity" : "");
+			pack(&s, 4, &A, &sa);
+			s.lo[0] += X, s.hi[0] += X, s.lo[1] += Y, s.hi[1] += Y;
+			pack(&s, 4, &B, &sb);
+			if (B.n != A.n || sb.failed != sa.failed)
+				fail_msg("%s: %zu bodies (%zu failed), at the origin %zu (%zu)", label, B.n,
+					 sb.failed, A.n, sa.failed);
+			for (size_t i = 0; i < A.n; i++) {
+				const dem_front_body_t *a = &A.b[i], *b = &B.b[i];
+				double size = sqrt(a->a * a->b);
+				assert_true(a->a == b->a && a->b == b->b && a->theta == b->theta);
+				if (fabs(b->x[0] - X - a->x[0]) > 1e-6 * size ||
+				    fabs(b->x[1] - Y - a->x[1]) > 1e-6 * size)
+					fail_msg("%s: body %zu at (%.17g, %.17g), at the origin (%.17g, %.17g)",
+						 label, i, b->x[0] - X, b->x[1] - Y, a->x[0], a->x[1]);
+			}
+			check(&s, &B, label);
+			print_message("# %s: %zu bodies, the same as at the origin\n", label, B.n);
+			free(A.b);
+			free(B.b);
+		}
+}
+
+/* The polygon bodies' area in the statistics: a b (m / 2) sin(2 pi / m)
+ * each, the regular m-gon of circumradius 1 (area (m / 2) sin(2 pi / m))
+ * stretched by a and b; and the library's polygon of the body stream's
+ * shape 1 (dem_polygon_regular, which the packer and lib/body share) is
+ * the checker's x2_polygon point for point. */
+static void test_polygon_area(void **state)
+{
+	(void)state;
+	for (int m = 3; m <= 64; m += m < 8 ? 1 : 28) {
+		double V[64][2], W[64][2];
+		dem_polygon_regular(m, 1.7, 0.6, V);
+		x2_polygon(0, 0, 1.7, 0.6, 0, m, W);
+		for (int k = 0; k < m; k++)
+			assert_true(fabs(V[k][0] - W[k][0]) < 1e-15 && fabs(V[k][1] - W[k][1]) < 1e-15);
+		dem_front_spec_t s = spec(DEM_FRONT_POLYGON, DEM_FRONT_OPEN, 8, 0.4, 1.5, 3);
+		s.sides = m;
+		struct bodies B;
+		dem_front_stats_t st;
+		pack(&s, 3, &B, &st);
+		double a = 0;
+		for (size_t i = 0; i < B.n; i++)
+			a += B.b[i].a * B.b[i].b * 0.5 * m * sin(2 * X2_PI / m);
+		assert_true(B.n > 20);
+		assert_int_equal(st.kept, B.n);
+		if (!(fabs(st.area - a) <= 1e-12 * a))
+			fail_msg("%d sides: area %.17g, closed form %.17g", m, st.area, a);
+		assert_true(fabs(st.density - a / 64) <= 1e-12 * st.density);
+		free(B.b);
+	}
+}
+
 /* 10^5 bodies a shape, aspect ratios 1 to 5 (issue 20, acceptance 1). */
 static void test_large(void **state)
 {
@@ -512,13 +778,18 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_wwk_against_sampling),
+		cmocka_unit_test(test_wwk_thin),
 		cmocka_unit_test(test_sat),
 		cmocka_unit_test(test_minkowski),
 		cmocka_unit_test(test_ellipse_geometry),
+		cmocka_unit_test(test_newton_count),
 		cmocka_unit_test(test_ellipse_in_polygon),
 		cmocka_unit_test(test_forms),
 		cmocka_unit_test(test_sides_and_polygon_domain),
 		cmocka_unit_test(test_refused),
+		cmocka_unit_test(test_gravity_wall_contact),
+		cmocka_unit_test(test_far_from_origin),
+		cmocka_unit_test(test_polygon_area),
 		cmocka_unit_test(test_large),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
