@@ -5,7 +5,7 @@
 #   make check SANITIZE=1   the same under AddressSanitizer and UBSan
 #   make check CC=clang     the same built by clang (in build/rel-clang)
 #   make MPI=1      the programs on MPI (-DDEM_MPI and mpicc --showme flags, any CC; in build/rel-mpi,
-#                   lib/par/par_mpi.c for lib/par/par.c); make check links
+#                   lib/par/par.c's MPI half); make check links
 #                   demshot so (build/rel-mpicheck) and runs the MPI tests
 #                   too when mpicc is installed (test_fe_ranks under mpirun,
 #                   tests/cli/mpi.bats)
@@ -64,7 +64,7 @@ ifeq ($(MPI_ON),1)
 BUILD    := $(BUILD)-mpi
 endif
 # OpenMPI's own flags (mpicc --showme), given to whichever CC builds: gcc
-# and clang alike compile lib/par/par_mpi.c
+# and clang alike compile lib/par/par.c's MPI half
 MPI_CFLAGS = $(shell mpicc --showme:compile 2>/dev/null)
 MPI_LIBS   = $(shell mpicc --showme:link 2>/dev/null)
 ifeq ($(COMPILER),clang)
@@ -80,7 +80,7 @@ ALL_CFLAGS = $(DEM_CFLAGS) $(CPPFLAGS) $(CFLAGS)
 LDLIBS   := $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lcholmod -lm $(if $(MPI_ON),$(MPI_LIBS))
 ALL_LDFLAGS = $(filter -fsanitize% -fno-sanitize%,$(OPT)) -fopenmp $(LDFLAGS)
 
-LIB_SRC  := $(filter-out $(if $(MPI_ON),lib/par/par.c,lib/par/par_mpi.c),$(sort $(wildcard lib/*/*.c)))
+LIB_SRC  := $(sort $(wildcard lib/*/*.c))
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
 CMD_SRC  := $(sort $(wildcard cmd/*.c))
 PROGS    := $(CMD_SRC:cmd/%.c=$(BUILD)/bin/%)
@@ -176,8 +176,9 @@ check: deps
 # build/rel-mpicheck) and runs them when mpicc is installed (make deps
 # installs OpenMPI): in the plain build only, not under SANITIZE, another CC
 # or MPI=1.  They are the plain build's objects with lib/par/par.o replaced
-# by par_mpi.o (the one file -DDEM_MPI changes), linked with OpenMPI: a minute
-# of CI less than compiling everything again (`make MPI=1` does that)
+# by its MPI build (par.c again with -DDEM_MPI, the one file it changes),
+# linked with OpenMPI: a minute of CI less than compiling everything again
+# (`make MPI=1` does that)
 MPICC    := $(if $(SAN)$(COMPILER)$(MPI_ON),,$(shell command -v mpicc 2>/dev/null))
 MPI_DIR  := build/rel-mpicheck
 MPI_LIB  := $(MPI_DIR)/libdem.a
@@ -193,11 +194,11 @@ test: build $(TESTS) $(FUZZER) $(if $(MPICC),mpi-build)
 mpi-build: $(MPI_DIR)/bin/demshot $(MPI_TESTS:%=$(MPI_DIR)/tests/%)
 
 ifneq ($(MPICC),)
-$(MPI_DIR)/par_mpi.o: lib/par/par_mpi.c
+$(MPI_DIR)/par.o: lib/par/par.c
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -DDEM_MPI $(MPI_CFLAGS) -MMD -MP -c $< -o $@
 
-$(MPI_LIB): $(filter-out $(BUILD)/lib/par/par.o,$(LIB_OBJ)) $(MPI_DIR)/par_mpi.o
+$(MPI_LIB): $(filter-out $(BUILD)/lib/par/par.o,$(LIB_OBJ)) $(MPI_DIR)/par.o
 	rm -f $@ && ar rcs $@ $^
 
 $(MPI_DIR)/bin/demshot: $(BUILD)/cmd/demshot.o $(MPI_LIB)
@@ -208,7 +209,7 @@ $(MPI_DIR)/tests/%: $(BUILD)/tests/unit/%.o $(MPI_LIB)
 	@mkdir -p $(@D)
 	$(CC) $(ALL_LDFLAGS) $< $(MPI_LIB) $(LDLIBS) $(MPI_LIBS) -lcmocka -o $@
 
--include $(MPI_DIR)/par_mpi.d
+-include $(MPI_DIR)/par.d
 endif
 
 demo: deps

@@ -2,9 +2,9 @@
  * on several processes (issue 22), behind one small interface so that MPI
  * stays out of lib/fe and the programs.
  *
- * Two implementations of this header: par.c, serial (one rank; every
- * operation leaves its data as it is), compiled by the default build; and
- * par_mpi.c, on MPI, compiled only by `make MPI=1` (mpicc, -DDEM_MPI).
+ * Two implementations of this header, both in par.c: serial (one rank;
+ * every operation leaves its data as it is), the default build's; and on
+ * MPI, with -DDEM_MPI and OpenMPI's flags (make MPI=1).
  * A NULL handle is one rank in either build.
  *
  * The ranks form a chain 0, 1, ..., size - 1: rank r shares data with
